@@ -1,0 +1,99 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+-------------------------------------------------------------------------------
+Application
+    pimpleDLMFoam
+
+Description
+    Transient solver for incompressible laminar flow with freely moving,
+    fixed or prescribed rigid particles resolved on a fixed mesh by the
+    distributed Lagrange multiplier (DLM) method of Kanarska, Lomov and
+    Antoun (2011, Computational Particle Mechanics).
+
+    Each time step:
+    1. PIMPLE solution of the momentum and pressure equations on the whole
+       mesh with the mixture density rho = rhoFluid + sum_p (rho_p -
+       rhoFluid) alpha_p, gravity in the p_rgh form:
+
+           rho (ddt(U) + div(phi, U)) - laplacian(mu, U)
+         = - grad(p_rgh) - (g & x) grad(rho)
+
+    2. rigid-body projection in the particles (the rigidProjection fvOption,
+       applied after each velocity correction);
+    3. particle motion and new volume fractions (dlmParticleCloud).
+
+    Inputs: constant/transportProperties (rho, nu of the fluid), constant/g,
+    constant/particleProperties, system/fvOptions (rigidProjection), fields
+    U and p_rgh.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "pimpleControl.H"
+#include "fvOptions.H"
+#include "dlmParticleCloud.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Transient solver for incompressible laminar flow with rigid"
+        " particles resolved by the distributed Lagrange multiplier method."
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createPimpleControl.H"
+    #include "createTimeControls.H"
+    #include "createFields.H"
+    #include "initContinuityErrs.H"
+    #include "CourantNo.H"
+    #include "setInitialDeltaT.H"
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+        #include "CourantNo.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        while (pimple.loop())
+        {
+            #include "UEqn.H"
+
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+        }
+
+        particles.move();
+        particles.writeStep();
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

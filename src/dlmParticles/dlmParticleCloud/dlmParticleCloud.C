@@ -1,0 +1,596 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "dlmParticleCloud.H"
+#include "zeroGradientFvPatchFields.H"
+#include "treeDataCell.H"
+#include "indexedOctree.H"
+#include "IFstream.H"
+#include "HashSet.H"
+#include "OSspecific.H"
+#include <sstream>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(dlmParticleCloud, 0);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dlmParticleCloud::readParticles(const dictionary& particlesDict)
+{
+    for (const entry& e : particlesDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(particlesDict)
+                << "Entry '" << e.keyword() << "' of 'particles' is not a"
+                << " particle sub-dictionary" << exit(FatalIOError);
+        }
+        particles_.append(new dlmParticle(e.dict()));
+    }
+}
+
+
+void Foam::dlmParticleCloud::readParticleFile()
+{
+    fileName file;
+    if (!properties_.readIfPresent("particleFile", file))
+    {
+        return;
+    }
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        file = mesh_.time().globalPath()/file;
+    }
+
+    const dictionary& defaults = properties_.subDict("particleFileDefaults");
+
+    IFstream is(file);
+    if (!is.good())
+    {
+        FatalIOErrorInFunction(properties_)
+            << "Cannot open particleFile " << file << exit(FatalIOError);
+    }
+
+    const word stem(file.nameLessExt());
+    std::string line;
+    label lineNo = 0;
+    label nRead = 0;
+    while (is.getLine(line))
+    {
+        ++lineNo;
+        const auto hash = line.find('#');
+        if (hash != std::string::npos)
+        {
+            line.erase(hash);
+        }
+        std::istringstream iss(line);
+        scalar x, y, z, radius;
+        if (!(iss >> x))
+        {
+            continue;
+        }
+        std::string rest;
+        if (!(iss >> y >> z >> radius) || (iss >> rest))
+        {
+            FatalErrorInFunction
+                << file << ", line " << lineNo << ": expected 'x y z radius'"
+                << ", got '" << line.c_str() << "'" << exit(FatalError);
+        }
+
+        dictionary particleDict(defaults);
+        particleDict.name() =
+            file + ":" + Foam::name(lineNo) + "." + stem + "_"
+          + Foam::name(nRead);
+        particleDict.set("position", point(x, y, z));
+        particleDict.set("radius", radius);
+        particles_.append(new dlmParticle(particleDict));
+        ++nRead;
+    }
+
+    Info<< "Read " << nRead << " particles from " << file << endl;
+}
+
+
+void Foam::dlmParticleCloud::checkParticles()
+{
+    const fileName& source = properties_.objectPath();
+    const boundBox& bounds = mesh_.bounds();
+
+    forAll(particles_, i)
+    {
+        dlmParticle& p = particles_[i];
+        const label nDims = p.shape().nDimensions();
+
+        if (twoD())
+        {
+            if (nDims != 2)
+            {
+                FatalErrorInFunction
+                    << "Particle " << p.name() << " (" << source << "): shape "
+                    << p.shape().type() << " is 3D but the mesh is 2D (one"
+                    << " cell thick, empty front and back). Use a 2D shape"
+                    << " such as disk." << exit(FatalError);
+            }
+            if (mesh_.solutionD()[vector::Z] != -1)
+            {
+                FatalErrorInFunction
+                    << "Particle " << p.name() << " (" << source << "): 2D"
+                    << " shapes need the mesh's empty direction to be z"
+                    << exit(FatalError);
+            }
+            // A 2D shape sits in the mesh's mid-plane
+            point X(p.position());
+            X.z() = 0.5*(bounds.min().z() + bounds.max().z());
+            p.setPosition(X);
+        }
+        else if (nDims != 3)
+        {
+            FatalErrorInFunction
+                << "Particle " << p.name() << " (" << source << "): shape "
+                << p.shape().type() << " is 2D but the mesh is 3D. Use a 3D"
+                << " shape such as sphere." << exit(FatalError);
+        }
+
+        label celli = mesh_.findCell(p.position());
+        reduce(celli, maxOp<label>());
+        if (celli < 0)
+        {
+            FatalErrorInFunction
+                << "Particle " << p.name() << " (" << source << "): its centre "
+                << p.position() << " is outside the mesh " << bounds
+                << exit(FatalError);
+        }
+    }
+
+    // Overlap is not allowed until contact forces exist
+    forAll(particles_, i)
+    {
+        const dlmParticle& pi = particles_[i];
+        for (label j = i + 1; j < particles_.size(); ++j)
+        {
+            const dlmParticle& pj = particles_[j];
+            const scalar gap =
+                mag(pi.position() - pj.position())
+              - pi.shape().boundingRadius() - pj.shape().boundingRadius();
+            if (gap < 0)
+            {
+                FatalErrorInFunction
+                    << "Particles " << pi.name() << " and " << pj.name()
+                    << " (" << source << ") overlap by " << -gap
+                    << " at the start" << exit(FatalError);
+            }
+        }
+    }
+}
+
+
+void Foam::dlmParticleCloud::updateFractions(const label i)
+{
+    const dlmParticle& p = particles_[i];
+    const particleShape& shape = p.shape();
+    const point& X = p.position();
+    const scalar Rb = shape.boundingRadius();
+
+    point lo(X - Rb*vector::one);
+    point hi(X + Rb*vector::one);
+    if (twoD())
+    {
+        const boundBox& bounds = mesh_.bounds();
+        lo.z() = bounds.min().z();
+        hi.z() = bounds.max().z();
+    }
+
+    const labelList candidates
+    (
+        mesh_.cellTree().findBox(treeBoundBox(lo, hi))
+    );
+
+    const tensor R(p.R());
+    const scalar leafSize = Rb/surfaceResolution_;
+
+    DynamicList<label>& cells = cells_[i];
+    DynamicList<scalar>& fractions = fractions_[i];
+    cells.clear();
+    fractions.clear();
+
+    for (const label celli : candidates)
+    {
+        const scalar f = shape.boxFraction
+        (
+            cellBoxes_[celli],
+            X,
+            R,
+            splitDirections_,
+            leafSize
+        );
+
+        if (f > 0)
+        {
+            if (f < 1 && !cellIsBox_[celli])
+            {
+                FatalErrorInFunction
+                    << "Particle " << p.name() << " cuts cell " << celli
+                    << " at " << mesh_.C()[celli] << ", which is not an"
+                    << " axis-aligned box. The solid fraction needs box cells"
+                    << " (blockMesh, hexahedral refinement) where particles go"
+                    << exit(FatalError);
+            }
+            cells.append(celli);
+            fractions.append(f);
+        }
+    }
+}
+
+
+void Foam::dlmParticleCloud::updateFields()
+{
+    scalarField& alpha = alpha_.primitiveFieldRef();
+    scalarField& rho = rho_.primitiveFieldRef();
+    alpha = 0;
+    rho = rhoFluid_.value();
+
+    forAll(particles_, i)
+    {
+        const scalar deltaRho = particles_[i].density() - rhoFluid_.value();
+        const DynamicList<label>& cells = cells_[i];
+        const DynamicList<scalar>& fractions = fractions_[i];
+
+        forAll(cells, k)
+        {
+            alpha[cells[k]] += fractions[k];
+            rho[cells[k]] += deltaRho*fractions[k];
+        }
+    }
+
+    alpha_.correctBoundaryConditions();
+    rho_.correctBoundaryConditions();
+}
+
+
+void Foam::dlmParticleCloud::writeVTK() const
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    const fileName dir(mesh_.time().globalPath()/"VTK"/"particles");
+    mkDir(dir);
+
+    const word timeName(mesh_.time().timeName());
+    {
+        OFstream os(dir/"particles_" + timeName + ".vtk");
+        os.precision(10);
+        const label n = particles_.size();
+
+        os  << "# vtk DataFile Version 3.0" << nl
+            << "pimpleDLMFoam particles, time " << timeName << nl
+            << "ASCII" << nl
+            << "DATASET POLYDATA" << nl
+            << "POINTS " << n << " double" << nl;
+        for (const dlmParticle& p : particles_)
+        {
+            const point& X = p.position();
+            os  << X.x() << ' ' << X.y() << ' ' << X.z() << nl;
+        }
+        os  << "VERTICES " << n << ' ' << 2*n << nl;
+        for (label i = 0; i < n; ++i)
+        {
+            os  << "1 " << i << nl;
+        }
+
+        os  << "POINT_DATA " << n << nl
+            << "SCALARS diameter double 1" << nl
+            << "LOOKUP_TABLE default" << nl;
+        for (const dlmParticle& p : particles_)
+        {
+            os  << 2*p.shape().boundingRadius() << nl;
+        }
+        os  << "SCALARS density double 1" << nl
+            << "LOOKUP_TABLE default" << nl;
+        for (const dlmParticle& p : particles_)
+        {
+            os  << p.density() << nl;
+        }
+
+        auto writeVectors = [&](const char* name, vector (*get)(const dlmParticle&))
+        {
+            os  << "VECTORS " << name << " double" << nl;
+            for (const dlmParticle& p : particles_)
+            {
+                const vector v(get(p));
+                os  << v.x() << ' ' << v.y() << ' ' << v.z() << nl;
+            }
+        };
+        writeVectors("velocity", [](const dlmParticle& p) { return p.velocity(); });
+        writeVectors
+        (
+            "angularVelocity",
+            [](const dlmParticle& p) { return p.angularVelocity(); }
+        );
+        writeVectors("force", [](const dlmParticle& p) { return p.force(); });
+        writeVectors("torque", [](const dlmParticle& p) { return p.torque(); });
+    }
+
+    // ParaView time series of every particles_<time>.vtk present
+    const fileNameList files(readDir(dir, fileName::FILE));
+    List<Tuple2<scalar, word>> series;
+    for (const fileName& f : files)
+    {
+        const word name(f.name());
+        if (name.startsWith("particles_") && f.hasExt("vtk"))
+        {
+            const word t(name.substr(10, name.size() - 14));
+            scalar value;
+            if (readScalar(t, value))
+            {
+                series.append(Tuple2<scalar, word>(value, name));
+            }
+        }
+    }
+    Foam::sort(series);
+
+    OFstream os(dir/"particles.vtk.series");
+    os  << "{" << nl
+        << "  \"file-series-version\" : \"1.0\"," << nl
+        << "  \"files\" : [" << nl;
+    forAll(series, i)
+    {
+        os  << "    { \"name\" : \"" << series[i].second().c_str()
+            << "\", \"time\" : " << series[i].first() << " }"
+            << (i + 1 < series.size() ? "," : "") << nl;
+    }
+    os  << "  ]" << nl
+        << "}" << nl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dlmParticleCloud::dlmParticleCloud
+(
+    const fvMesh& mesh,
+    const dimensionedScalar& rhoFluid
+)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            "particles",
+            mesh.time().timeName(),
+            "uniform",
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    properties_
+    (
+        IOobject
+        (
+            "particleProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    rhoFluid_(rhoFluid),
+    surfaceResolution_
+    (
+        properties_.getOrDefault<scalar>("surfaceResolution", 32)
+    ),
+    cellBoxes_(mesh.nCells()),
+    cellIsBox_(mesh.nCells()),
+    splitDirections_(Zero),
+    alpha_
+    (
+        IOobject
+        (
+            "alpha.solid",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimless, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    rho_
+    (
+        IOobject
+        (
+            "rho",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        rhoFluid,
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    projected_(false),
+    startTimeName_(mesh.time().timeName())
+{
+    const wordHashSet known
+    ({
+        "surfaceResolution", "particles", "particleFile",
+        "particleFileDefaults", "FoamFile"
+    });
+    for (const entry& e : properties_)
+    {
+        if (!known.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(properties_)
+                << "Unknown keyword '" << e.keyword() << "'. Known keywords: "
+                << flatOutput(known.sortedToc()) << exit(FatalIOError);
+        }
+    }
+    if (surfaceResolution_ < 1)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "surfaceResolution " << surfaceResolution_
+            << " must be at least 1" << exit(FatalIOError);
+    }
+
+    // On restart the state written with the start time replaces the input
+    const fileName statePath(objectPath());
+    if (isFile(statePath))
+    {
+        Info<< "Reading particle state from " << statePath << endl;
+        IFstream is(statePath);
+        const dictionary state(is);
+        readParticles(state.subDict("particles"));
+    }
+    else
+    {
+        if (properties_.found("particles"))
+        {
+            readParticles(properties_.subDict("particles"));
+        }
+        readParticleFile();
+    }
+
+    const pointField& points = mesh.points();
+    const labelListList& cellPoints = mesh.cellPoints();
+    const scalarField& V = mesh.V();
+    forAll(cellBoxes_, celli)
+    {
+        cellBoxes_[celli] = boundBox(points, cellPoints[celli], false);
+        cellIsBox_[celli] =
+            mag(cellBoxes_[celli].volume() - V[celli]) < 1e-6*V[celli];
+    }
+
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        splitDirections_[d] = mesh.solutionD()[d] == 1 ? 1 : 0;
+    }
+
+    checkParticles();
+
+    cells_.setSize(particles_.size());
+    fractions_.setSize(particles_.size());
+    forAll(particles_, i)
+    {
+        updateFractions(i);
+    }
+    updateFields();
+
+    Info<< "Particles: " << particles_.size() << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dlmParticleCloud::move()
+{
+    if (!projected_)
+    {
+        for (const dlmParticle& p : particles_)
+        {
+            if (p.isFree())
+            {
+                FatalErrorInFunction
+                    << "Particle " << p.name() << " is free but no rigid"
+                    << " projection ran this step: add a rigidProjection"
+                    << " entry to system/fvOptions" << exit(FatalError);
+            }
+        }
+    }
+    projected_ = false;
+
+    const scalar deltaT = mesh_.time().deltaTValue();
+
+    forAll(particles_, i)
+    {
+        dlmParticle& p = particles_[i];
+        if (p.motion() != dlmParticle::motionType::fixed)
+        {
+            p.move(deltaT);
+            updateFractions(i);
+        }
+    }
+
+    updateFields();
+}
+
+
+void Foam::dlmParticleCloud::writeStep()
+{
+    if (Pstream::master())
+    {
+        if (!historyFile_.valid())
+        {
+            const fileName dir
+            (
+                mesh_.time().globalPath()/"postProcessing"/"particles"
+               /startTimeName_
+            );
+            mkDir(dir);
+            historyFile_.reset(new OFstream(dir/"particles.dat"));
+            historyFile_().precision(15);
+            historyFile_()
+                << "# time particle x y z Ux Uy Uz omegax omegay omegaz"
+                << " Fx Fy Fz Tx Ty Tz" << nl
+                << "# F, T: hydrodynamic force and torque (about the"
+                << " centroid)" << (twoD() ? " on the mesh's depth" : "")
+                << endl;
+        }
+
+        OFstream& os = historyFile_();
+        const word timeName(mesh_.time().timeName());
+        for (const dlmParticle& p : particles_)
+        {
+            os  << mesh_.time().value() << ' ' << p.name().c_str();
+            for (const vector& v :
+                {
+                    p.position(), p.velocity(), p.angularVelocity(),
+                    p.force(), p.torque()
+                })
+            {
+                os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
+            }
+            os  << nl;
+        }
+        os.flush();
+    }
+
+    if (mesh_.time().writeTime())
+    {
+        writeVTK();
+    }
+}
+
+
+bool Foam::dlmParticleCloud::writeData(Ostream& os) const
+{
+    // Full precision, so that a restart continues to round-off
+    const auto oldPrecision = os.precision(17);
+
+    os.beginBlock("particles");
+    for (const dlmParticle& p : particles_)
+    {
+        p.write(os);
+    }
+    os.endBlock();
+
+    os.precision(oldPrecision);
+
+    return os.good();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,222 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "rigidProjection.H"
+#include "dlmParticleCloud.H"
+#include "uniformDimensionedFields.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fv
+{
+    defineTypeNameAndDebug(rigidProjection, 0);
+    addToRunTimeSelectionTable(option, rigidProjection, dictionary);
+}
+}
+
+const Foam::Enum<Foam::fv::rigidProjection::mixedCellsType>
+Foam::fv::rigidProjection::mixedCellsTypeNames
+({
+    { mixedCellsType::volumeWeighted, "volumeWeighted" },
+    { mixedCellsType::massWeighted, "massWeighted" },
+});
+
+
+namespace
+{
+    // Layout of the per-particle sums reduced over processors
+    enum sumIndex
+    {
+        iMass = 0,          // sum w
+        iFirst = 1,         // sum w r (3)
+        iMomentum = 4,      // sum w u (3)
+        iAngular = 7,       // sum w r x u (3)
+        iSecond = 10,       // sum w r r (6, symmetric)
+        nSums = 16
+    };
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fv::rigidProjection::rigidProjection
+(
+    const word& name,
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    option(name, modelType, dict, mesh),
+    mixedCells_(mixedCellsType::massWeighted)
+{
+    fieldNames_.setSize(1, "U");
+    applied_.setSize(1, false);
+
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::fv::rigidProjection::read(const dictionary& dict)
+{
+    if (option::read(dict))
+    {
+        mixedCells_ = mixedCellsTypeNames.getOrDefault
+        (
+            "mixedCells",
+            coeffs_,
+            mixedCellsType::massWeighted
+        );
+        return true;
+    }
+
+    return false;
+}
+
+
+void Foam::fv::rigidProjection::correct(volVectorField& U)
+{
+    dlmParticleCloud& cloud =
+        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
+    PtrList<dlmParticle>& particles = cloud.particles();
+
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const scalarField& rho = cloud.rho();
+    vectorField& u = U.primitiveFieldRef();
+
+    // Local sums, relative to each particle's own centre
+    scalarList sums(nSums*particles.size(), Zero);
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        const DynamicList<label>& cells = cloud.cells(i);
+        const DynamicList<scalar>& fractions = cloud.fractions(i);
+        scalar* s = &sums[nSums*i];
+
+        forAll(cells, k)
+        {
+            const label celli = cells[k];
+            const scalar w =
+                rho[celli]*beta(fractions[k], p.density(), rho[celli])*V[celli];
+            const vector r(C[celli] - p.position());
+            const vector& uc = u[celli];
+            const vector rxu(r ^ uc);
+
+            s[iMass] += w;
+            for (direction d = 0; d < 3; ++d)
+            {
+                s[iFirst + d] += w*r[d];
+                s[iMomentum + d] += w*uc[d];
+                s[iAngular + d] += w*rxu[d];
+            }
+            s[iSecond + 0] += w*r.x()*r.x();
+            s[iSecond + 1] += w*r.x()*r.y();
+            s[iSecond + 2] += w*r.x()*r.z();
+            s[iSecond + 3] += w*r.y()*r.y();
+            s[iSecond + 4] += w*r.y()*r.z();
+            s[iSecond + 5] += w*r.z()*r.z();
+        }
+    }
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+
+    const scalar deltaT = mesh_.time().deltaTValue();
+    vector g(Zero);
+    if (mesh_.time().foundObject<uniformDimensionedVectorField>("g"))
+    {
+        g = mesh_.time().lookupObject<uniformDimensionedVectorField>("g")
+            .value();
+    }
+    const bool twoD = cloud.twoD();
+
+    forAll(particles, i)
+    {
+        dlmParticle& p = particles[i];
+        const scalar* s = &sums[nSums*i];
+        const scalar M = s[iMass];
+
+        if (M <= 0)
+        {
+            FatalErrorInFunction
+                << "Particle " << p.name() << " covers no cell volume"
+                << exit(FatalError);
+        }
+
+        // Discrete centroid, momentum, and moments about the centroid
+        const vector delta
+        (
+            vector(s[iFirst], s[iFirst + 1], s[iFirst + 2])/M
+        );
+        const point centroid(p.position() + delta);
+        const vector P(s[iMomentum], s[iMomentum + 1], s[iMomentum + 2]);
+        const vector L
+        (
+            vector(s[iAngular], s[iAngular + 1], s[iAngular + 2])
+          - (delta ^ P)
+        );
+        const symmTensor J
+        (
+            symmTensor
+            (
+                s[iSecond], s[iSecond + 1], s[iSecond + 2],
+                s[iSecond + 3], s[iSecond + 4], s[iSecond + 5]
+            )
+          - M*sqr(delta)
+        );
+        const symmTensor I(tr(J)*symmTensor::I - J);
+
+        vector Up(p.velocity());
+        vector omega(p.angularVelocity());
+        point centre(p.position());
+
+        if (p.isFree())
+        {
+            Up = P/M;
+            if (twoD)
+            {
+                omega = vector(0, 0, L.z()/I.zz());
+            }
+            else
+            {
+                omega = inv(I) & L;
+            }
+            p.setVelocities(Up, omega);
+            // Rotation about the discrete centroid conserves momentum exactly
+            centre = centroid;
+        }
+
+        vector F((P - M*p.velocity0())/deltaT - M*g);
+        vector T((L - (I & p.angularVelocity0()))/deltaT);
+        if (twoD)
+        {
+            F.z() = 0;
+            T = vector(0, 0, T.z());
+        }
+        p.setLoads(F, T);
+
+        const DynamicList<label>& cells = cloud.cells(i);
+        const DynamicList<scalar>& fractions = cloud.fractions(i);
+        forAll(cells, k)
+        {
+            const label celli = cells[k];
+            const vector us(Up + (omega ^ (C[celli] - centre)));
+            u[celli] +=
+                beta(fractions[k], p.density(), rho[celli])*(us - u[celli]);
+        }
+    }
+
+    U.correctBoundaryConditions();
+    cloud.setProjected();
+}
+
+
+// ************************************************************************* //

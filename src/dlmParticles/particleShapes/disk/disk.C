@@ -1,0 +1,98 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "disk.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace particleShapes
+{
+    defineTypeNameAndDebug(disk, 0);
+    addToRunTimeSelectionTable(particleShape, disk, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleShapes::disk::disk(const scalar radius)
+:
+    radius_(radius)
+{}
+
+
+Foam::particleShapes::disk::disk(const dictionary& dict)
+:
+    radius_(dict.get<scalar>("radius"))
+{
+    if (radius_ <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "radius " << radius_ << " of particle " << dict.dictName()
+            << " must be positive" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::particleShapes::disk::keywords() const
+{
+    return wordList({"radius"});
+}
+
+
+Foam::label Foam::particleShapes::disk::nDimensions() const
+{
+    return 2;
+}
+
+
+Foam::scalar Foam::particleShapes::disk::boundingRadius() const
+{
+    return radius_;
+}
+
+
+Foam::scalar Foam::particleShapes::disk::volume() const
+{
+    return constant::mathematical::pi*sqr(radius_);
+}
+
+
+Foam::symmTensor Foam::particleShapes::disk::inertiaPerUnitDensity() const
+{
+    // Per unit depth: polar moment about the axis z, diametral about x and y
+    const scalar diametral = 0.25*volume()*sqr(radius_);
+    return symmTensor(diametral, 0, 0, diametral, 0, 2*diametral);
+}
+
+
+Foam::scalar Foam::particleShapes::disk::signedDistance
+(
+    const vector& r,
+    vector& normal
+) const
+{
+    const vector rPlane(r.x(), r.y(), 0);
+    const scalar magR = mag(rPlane);
+    normal = magR > VSMALL ? rPlane/magR : vector(1, 0, 0);
+    return magR - radius_;
+}
+
+
+void Foam::particleShapes::disk::write(Ostream& os) const
+{
+    os.writeEntry("shape", typeName);
+    os.writeEntry("radius", radius_);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,121 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "particleShape.H"
+#include "cutCellFraction.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(particleShape, 0);
+    defineRunTimeSelectionTable(particleShape, dictionary);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::particleShape::subBoxFraction
+(
+    const vector& span,
+    const vector& r,
+    const tensor& R,
+    const vector& splitDirections,
+    const scalar leafSize
+) const
+{
+    const vector halfSpan(0.5*span);
+    const vector rCentre(r + halfSpan);
+
+    vector normal;
+    const scalar d = signedDistance(R.T() & rCentre, normal);
+
+    // The signed distance is a true distance: a box whose circumscribed
+    // sphere does not reach the surface is entirely inside or outside
+    const scalar halfDiagonal = mag(halfSpan);
+    if (d >= halfDiagonal)
+    {
+        return 0;
+    }
+    if (d <= -halfDiagonal)
+    {
+        return 1;
+    }
+
+    const scalar largestSplit = max
+    (
+        max(splitDirections.x()*span.x(), splitDirections.y()*span.y()),
+        splitDirections.z()*span.z()
+    );
+
+    if (largestSplit <= leafSize)
+    {
+        return cutCellFraction::box(R & normal, d, span);
+    }
+
+    // Split in two along each split direction
+    const vector childSpan
+    (
+        splitDirections.x() > 0 ? halfSpan.x() : span.x(),
+        splitDirections.y() > 0 ? halfSpan.y() : span.y(),
+        splitDirections.z() > 0 ? halfSpan.z() : span.z()
+    );
+    const label nx = splitDirections.x() > 0 ? 2 : 1;
+    const label ny = splitDirections.y() > 0 ? 2 : 1;
+    const label nz = splitDirections.z() > 0 ? 2 : 1;
+
+    scalar sum = 0;
+    for (label i = 0; i < nx; ++i)
+    {
+        for (label j = 0; j < ny; ++j)
+        {
+            for (label k = 0; k < nz; ++k)
+            {
+                const vector offset
+                (
+                    i*childSpan.x(),
+                    j*childSpan.y(),
+                    k*childSpan.z()
+                );
+                sum += subBoxFraction
+                (
+                    childSpan,
+                    r + offset,
+                    R,
+                    splitDirections,
+                    leafSize
+                );
+            }
+        }
+    }
+
+    return sum/(nx*ny*nz);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::particleShape::boxFraction
+(
+    const boundBox& bb,
+    const point& X,
+    const tensor& R,
+    const vector& splitDirections,
+    const scalar leafSize
+) const
+{
+    return subBoxFraction
+    (
+        bb.span(),
+        bb.min() - X,
+        R,
+        splitDirections,
+        leafSize
+    );
+}
+
+
+// ************************************************************************* //

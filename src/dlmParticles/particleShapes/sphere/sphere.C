@@ -1,0 +1,95 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "sphere.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace particleShapes
+{
+    defineTypeNameAndDebug(sphere, 0);
+    addToRunTimeSelectionTable(particleShape, sphere, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleShapes::sphere::sphere(const scalar radius)
+:
+    radius_(radius)
+{}
+
+
+Foam::particleShapes::sphere::sphere(const dictionary& dict)
+:
+    radius_(dict.get<scalar>("radius"))
+{
+    if (radius_ <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "radius " << radius_ << " of particle " << dict.dictName()
+            << " must be positive" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::particleShapes::sphere::keywords() const
+{
+    return wordList({"radius"});
+}
+
+
+Foam::label Foam::particleShapes::sphere::nDimensions() const
+{
+    return 3;
+}
+
+
+Foam::scalar Foam::particleShapes::sphere::boundingRadius() const
+{
+    return radius_;
+}
+
+
+Foam::scalar Foam::particleShapes::sphere::volume() const
+{
+    return 4.0/3.0*constant::mathematical::pi*pow3(radius_);
+}
+
+
+Foam::symmTensor Foam::particleShapes::sphere::inertiaPerUnitDensity() const
+{
+    return 0.4*volume()*sqr(radius_)*symmTensor::I;
+}
+
+
+Foam::scalar Foam::particleShapes::sphere::signedDistance
+(
+    const vector& r,
+    vector& normal
+) const
+{
+    const scalar magR = mag(r);
+    normal = magR > VSMALL ? r/magR : vector(1, 0, 0);
+    return magR - radius_;
+}
+
+
+void Foam::particleShapes::sphere::write(Ostream& os) const
+{
+    os.writeEntry("shape", typeName);
+    os.writeEntry("radius", radius_);
+}
+
+
+// ************************************************************************* //
