@@ -156,7 +156,6 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
         (
             vector(s[iFirst], s[iFirst + 1], s[iFirst + 2])/M
         );
-        const point centroid(p.position() + delta);
         const vector P(s[iMomentum], s[iMomentum + 1], s[iMomentum + 2]);
         const vector L
         (
@@ -174,27 +173,22 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
         );
         const symmTensor I(tr(J)*symmTensor::I - J);
 
-        vector Up(p.velocity());
-        vector omega(p.angularVelocity());
-        point centre(p.position());
-
         if (p.isFree())
         {
-            Up = P/M;
-            if (twoD)
-            {
-                omega = vector(0, 0, L.z()/I.zz());
-            }
-            else
-            {
-                omega = inv(I) & L;
-            }
-            p.setVelocities(Up, omega);
-            // Rotation about the discrete centroid conserves momentum exactly
-            centre = centroid;
+            const vector omega
+            (
+                twoD ? vector(0, 0, L.z()/I.zz()) : (inv(I) & L)
+            );
+            // P/M is the velocity of the discrete centroid; the particle
+            // moves with the velocity of its own centre
+            p.setVelocities(P/M - (omega ^ delta), omega);
         }
 
-        vector F((P - M*p.velocity0())/deltaT - M*g);
+        const vector P0
+        (
+            M*(p.velocity0() + (p.angularVelocity0() ^ delta))
+        );
+        vector F((P - P0)/deltaT - M*g);
         vector T((L - (I & p.angularVelocity0()))/deltaT);
         if (twoD)
         {
@@ -203,12 +197,15 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
         }
         p.setLoads(F, T);
 
+        const vector& Up = p.velocity();
+        const vector& omega = p.angularVelocity();
+        const point& X = p.position();
         const DynamicList<label>& cells = cloud.cells(i);
         const DynamicList<scalar>& fractions = cloud.fractions(i);
         forAll(cells, k)
         {
             const label celli = cells[k];
-            const vector us(Up + (omega ^ (C[celli] - centre)));
+            const vector us(Up + (omega ^ (C[celli] - X)));
             u[celli] +=
                 beta(fractions[k], p.density(), rho[celli])*(us - u[celli]);
         }

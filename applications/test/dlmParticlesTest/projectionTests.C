@@ -1,0 +1,241 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+-------------------------------------------------------------------------------
+Description
+    Tests on a mesh: the solid fraction field of the cloud and the rigid
+    projection (conservation, rigid fields unchanged), in 3D and 2D.
+
+\*---------------------------------------------------------------------------*/
+
+#include <catch2/catch.hpp>
+
+#include "testCase.H"
+#include "dlmParticleCloud.H"
+#include "rigidProjection.H"
+#include "Random.H"
+
+using namespace Foam;
+
+namespace
+{
+
+struct Moments
+{
+    vector momentum;
+    vector angularMomentum;
+    scalar scale;
+};
+
+
+// Momentum and angular momentum (about the origin) of rho U
+Moments moments(const volScalarField& rho, const volVectorField& U)
+{
+    const fvMesh& mesh = U.mesh();
+    Moments m{Zero, Zero, 0};
+    forAll(U, celli)
+    {
+        const scalar mass = rho[celli]*mesh.V()[celli];
+        m.momentum += mass*U[celli];
+        m.angularMomentum += mass*(mesh.C()[celli] ^ U[celli]);
+        m.scale += mass*mag(U[celli]);
+    }
+    return m;
+}
+
+
+tmp<volVectorField> zeroVelocity(const fvMesh& mesh)
+{
+    return tmp<volVectorField>::New
+    (
+        IOobject("U", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimVelocity, Zero)
+    );
+}
+
+
+autoPtr<fv::option> projection(const fvMesh& mesh, const word& mixedCells)
+{
+    dictionary dict;
+    dict.add("type", "rigidProjection");
+    dict.add("mixedCells", mixedCells);
+    return autoPtr<fv::option>
+    (
+        new fv::rigidProjection("projection", "rigidProjection", dict, mesh)
+    );
+}
+
+
+bool twoD(const fvMesh& mesh)
+{
+    return mesh.nSolutionD() == 2;
+}
+
+
+void runConservation()
+{
+    const fvMesh& mesh = testCase::mesh();
+
+    // The case's particle has density 3: ratios 3 and 0.5
+    for (const scalar rhoFluid : {1.0, 6.0})
+    {
+        for (const word mixedCells : {"massWeighted", "volumeWeighted"})
+        {
+            dlmParticleCloud cloud(mesh, dimensionedScalar("rho", dimDensity, rhoFluid));
+            tmp<volVectorField> tU(zeroVelocity(mesh));
+            volVectorField& U = tU.ref();
+
+            Random rnd(3);
+            forAll(U, celli)
+            {
+                U[celli] = rnd.sample01<vector>() - 0.5*vector::one;
+                if (twoD(mesh))
+                {
+                    U[celli].z() = 0;
+                }
+            }
+
+            const Moments before(moments(cloud.rho(), U));
+            projection(mesh, mixedCells)->correct(U);
+            const Moments after(moments(cloud.rho(), U));
+
+            INFO(mixedCells << ", density ratio " << 3/rhoFluid);
+            CHECK(mag(after.momentum - before.momentum) < 1e-13*before.scale);
+            CHECK
+            (
+                mag(after.angularMomentum - before.angularMomentum)
+              < 1e-13*before.scale
+            );
+
+            // Cells fully inside move rigidly with the particle: velocity
+            // differences are omega x separations
+            const dlmParticle& p = cloud.particles()[0];
+            const vector omega(p.angularVelocity());
+            const DynamicList<label>& cells = cloud.cells(0);
+            const DynamicList<scalar>& fractions = cloud.fractions(0);
+            label reference = -1;
+            label nSolid = 0;
+            forAll(cells, k)
+            {
+                if (fractions[k] < 1)
+                {
+                    continue;
+                }
+                const label celli = cells[k];
+                if (reference < 0)
+                {
+                    reference = celli;
+                }
+                const vector relative(U[celli] - U[reference]);
+                const vector rigid
+                (
+                    omega ^ (mesh.C()[celli] - mesh.C()[reference])
+                );
+                CHECK(mag(relative - rigid) < 1e-12);
+                ++nSolid;
+            }
+            CHECK(nSolid > 0);
+            CHECK(mag(p.velocity()) > 0);
+        }
+    }
+}
+
+
+void runRigidUnchanged()
+{
+    const fvMesh& mesh = testCase::mesh();
+    dlmParticleCloud cloud(mesh, dimensionedScalar("rho", dimDensity, 1.0));
+    const point X(cloud.particles()[0].position());
+
+    const vector U0 = twoD(mesh) ? vector(0.3, -0.2, 0) : vector(0.3, -0.2, 0.1);
+    const vector omega0 = twoD(mesh) ? vector(0, 0, 2) : vector(1, -2, 0.5);
+
+    for (const word mixedCells : {"massWeighted", "volumeWeighted"})
+    {
+        tmp<volVectorField> tU(zeroVelocity(mesh));
+        volVectorField& U = tU.ref();
+        forAll(U, celli)
+        {
+            U[celli] = U0 + (omega0 ^ (mesh.C()[celli] - X));
+        }
+        const vectorField before(U.primitiveField());
+
+        projection(mesh, mixedCells)->correct(U);
+
+        INFO(mixedCells);
+        CHECK(max(mag(U.primitiveField() - before)) < 1e-12);
+        CHECK(mag(cloud.particles()[0].velocity() - U0) < 1e-12);
+        CHECK(mag(cloud.particles()[0].angularVelocity() - omega0) < 1e-11);
+    }
+}
+
+
+void runFractionIntegral()
+{
+    const fvMesh& mesh = testCase::mesh();
+    dlmParticleCloud cloud(mesh, dimensionedScalar("rho", dimDensity, 1.0));
+    const dlmParticle& p = cloud.particles()[0];
+
+    scalar exact = p.shape().volume();
+    if (twoD(mesh))
+    {
+        exact *= mesh.bounds().span().z();
+    }
+    const scalar sum = gSum(cloud.alpha().primitiveField()*mesh.V());
+    CHECK(sum/exact == Approx(1).epsilon(1e-3));
+
+    // rho = rhoFluid + (rho_s - rhoFluid) alpha
+    const scalar expectedMass = gSum(mesh.V()) + (p.density() - 1)*sum;
+    CHECK(gSum(cloud.rho().primitiveField()*mesh.V()) == Approx(expectedMass));
+}
+
+} // End anonymous namespace
+
+
+TEST_CASE("3D: solid fraction integrates to the sphere's volume", "[3D]")
+{
+    REQUIRE(testCase::available());
+    REQUIRE_FALSE(twoD(testCase::mesh()));
+    runFractionIntegral();
+}
+
+
+TEST_CASE("3D: projection conserves momentum and angular momentum", "[3D]")
+{
+    REQUIRE(testCase::available());
+    runConservation();
+}
+
+
+TEST_CASE("3D: a rigid velocity field is left unchanged", "[3D]")
+{
+    REQUIRE(testCase::available());
+    runRigidUnchanged();
+}
+
+
+TEST_CASE("2D: solid fraction integrates to the disk's area", "[2D]")
+{
+    REQUIRE(testCase::available());
+    REQUIRE(twoD(testCase::mesh()));
+    runFractionIntegral();
+}
+
+
+TEST_CASE("2D: projection conserves momentum and angular momentum", "[2D]")
+{
+    REQUIRE(testCase::available());
+    runConservation();
+}
+
+
+TEST_CASE("2D: a rigid velocity field is left unchanged", "[2D]")
+{
+    REQUIRE(testCase::available());
+    runRigidUnchanged();
+}
+
+
+// ************************************************************************* //

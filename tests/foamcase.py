@@ -1,0 +1,81 @@
+"""Helpers to run OpenFOAM cases from the tests and validation scripts."""
+
+import os
+import pathlib
+import shutil
+import subprocess
+
+import numpy as np
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def foam_environment():
+    """The environment of etc/bashrc, as a dict."""
+    out = subprocess.run(
+        ["bash", "-c", f"source '{ROOT}/etc/bashrc' >/dev/null 2>&1 && env -0"],
+        capture_output=True, check=True).stdout.decode()
+    return dict(item.split("=", 1) for item in out.split("\0") if "=" in item)
+
+
+class Case:
+    """An OpenFOAM case directory with the project's environment."""
+
+    def __init__(self, path, env=None):
+        self.path = pathlib.Path(path)
+        self.env = env if env is not None else foam_environment()
+
+    @classmethod
+    def copy(cls, source, destination, env=None):
+        destination = pathlib.Path(destination)
+        if destination.exists():
+            shutil.rmtree(destination)
+        shutil.copytree(source, destination, ignore=shutil.ignore_patterns(
+            "log.*", "processor*", "postProcessing", "VTK", "polyMesh",
+            "[1-9]*", "0.[0-9]*"))
+        return cls(destination, env)
+
+    def run(self, *cmd, log=None, check=True, np=1):
+        """Run a command in the case, output to log.<name>; np > 1: mpirun."""
+        cmd = [str(c) for c in cmd]
+        if np > 1:
+            cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe",
+                   "-np", str(np)] + cmd + ["-parallel"]
+        name = log or pathlib.Path(cmd[0] if np == 1 else cmd[6]).name
+        logfile = self.path / f"log.{name}"
+        with open(logfile, "w") as out:
+            result = subprocess.run(cmd, cwd=self.path, env=self.env,
+                                    stdout=out, stderr=subprocess.STDOUT)
+        if check and result.returncode != 0:
+            tail = logfile.read_text()[-3000:]
+            raise RuntimeError(f"{' '.join(cmd)} failed in {self.path}:\n{tail}")
+        result.log = logfile.read_text()
+        return result
+
+    def set(self, file, entry, value):
+        """Set a dictionary entry with foamDictionary."""
+        self.run("foamDictionary", file, "-entry", entry, "-set", str(value),
+                 log="foamDictionary")
+
+    def history(self, start="0"):
+        """Particle history: dict name -> array of rows
+        (t, x, y, z, Ux, Uy, Uz, wx, wy, wz, Fx, Fy, Fz, Tx, Ty, Tz)."""
+        path = self.path / "postProcessing" / "particles" / start / "particles.dat"
+        rows = {}
+        for line in path.read_text().splitlines():
+            if line.startswith("#"):
+                continue
+            fields = line.split()
+            rows.setdefault(fields[1], []).append(
+                [float(fields[0])] + [float(v) for v in fields[2:]])
+        return {name: np.array(values) for name, values in rows.items()}
+
+    def times(self):
+        """Written time directories, sorted."""
+        found = []
+        for entry in self.path.iterdir():
+            try:
+                found.append((float(entry.name), entry.name))
+            except ValueError:
+                pass
+        return [name for _, name in sorted(found)]
