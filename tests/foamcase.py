@@ -44,7 +44,8 @@ class Case:
         name = log or pathlib.Path(cmd[0] if np == 1 else cmd[6]).name
         logfile = self.path / f"log.{name}"
         with open(logfile, "w") as out:
-            result = subprocess.run(cmd, cwd=self.path, env=self.env,
+            result = subprocess.run(cmd, cwd=self.path,
+                                    env=dict(self.env, PWD=str(self.path)),
                                     stdout=out, stderr=subprocess.STDOUT)
         if check and result.returncode != 0:
             tail = logfile.read_text()[-3000:]
@@ -69,6 +70,15 @@ class Case:
             rows.setdefault(fields[1], []).append(
                 [float(fields[0])] + [float(v) for v in fields[2:]])
         return {name: np.array(values) for name, values in rows.items()}
+
+    def internal_field(self, relative_path):
+        """Values of a scalar field written in ascii (uniform or nonuniform)."""
+        text = (self.path / relative_path).read_text()
+        rest = text[text.index("internalField"):]
+        if rest.split()[1].startswith("uniform"):
+            return np.array([float(rest.split()[2].rstrip(";"))])
+        body = rest[rest.index("(") + 1:]
+        return np.array([float(v) for v in body[:body.index(")")].split()])
 
     def times(self):
         """Written time directories, sorted."""

@@ -15,13 +15,15 @@ Description
     Each time step:
     1. PIMPLE solution of the momentum and pressure equations on the whole
        mesh with the mixture density rho = rhoFluid + sum_p (rho_p -
-       rhoFluid) alpha_p, gravity in the p_rgh form:
+       rhoFluid) alpha_p:
 
-           rho (ddt(U) + div(phi, U)) - laplacian(mu, U)
-         = - grad(p_rgh) - (g & x) grad(rho)
+           rho (ddt(U) + div(phi, U)) - laplacian(mu, U) = - grad(p_rgh)
 
+       p_rgh = p - rhoFluid (g & x) is the pressure less the fluid's
+       hydrostatic part, so a fluid at rest stays at rest exactly;
     2. rigid-body projection in the particles (the rigidProjection fvOption,
-       applied after each velocity correction);
+       applied after each velocity correction), which also gives each free
+       particle the impulse of its weight less its buoyancy;
     3. particle motion and new volume fractions (dlmParticleCloud).
 
     Inputs: constant/transportProperties (rho, nu of the fluid), constant/g,

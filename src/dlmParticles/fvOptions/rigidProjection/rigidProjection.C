@@ -7,6 +7,7 @@
 #include "rigidProjection.H"
 #include "dlmParticleCloud.H"
 #include "uniformDimensionedFields.H"
+#include "fvMatrices.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -38,8 +39,24 @@ namespace
         iMomentum = 4,      // sum w u (3)
         iAngular = 7,       // sum w r x u (3)
         iSecond = 10,       // sum w r r (6, symmetric)
-        nSums = 16
+        iVolume = 16,       // sum f V
+        nSums = 17
     };
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::fv::rigidProjection::gravity() const
+{
+    const word name("g");
+    if (mesh_.time().foundObject<uniformDimensionedVectorField>(name))
+    {
+        return
+            mesh_.time().lookupObject<uniformDimensionedVectorField>(name)
+           .value();
+    }
+    return Zero;
 }
 
 
@@ -82,6 +99,44 @@ bool Foam::fv::rigidProjection::read(const dictionary& dict)
 }
 
 
+void Foam::fv::rigidProjection::addSup
+(
+    const volScalarField& rho,
+    fvMatrix<vector>& eqn,
+    const label fieldi
+)
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const vector g(gravity());
+    const scalar rhoFluid = cloud.rhoFluid().value();
+
+    DimensionedField<vector, volMesh> weight
+    (
+        IOobject("reducedWeight", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedVector(eqn.dimensions()/dimVolume, Zero)
+    );
+
+    forAll(cloud.particles(), i)
+    {
+        const dlmParticle& p = cloud.particles()[i];
+        if (p.isFree())
+        {
+            const vector density((p.density() - rhoFluid)*g);
+            const DynamicList<label>& cells = cloud.cells(i);
+            const DynamicList<scalar>& fractions = cloud.fractions(i);
+            forAll(cells, k)
+            {
+                weight[cells[k]] += fractions[k]*density;
+            }
+        }
+    }
+
+    eqn += weight;
+}
+
+
 void Foam::fv::rigidProjection::correct(volVectorField& U)
 {
     dlmParticleCloud& cloud =
@@ -92,6 +147,11 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
     const scalarField& V = mesh_.V();
     const scalarField& rho = cloud.rho();
     vectorField& u = U.primitiveFieldRef();
+
+    const vector g(gravity());
+    const scalar rhoFluid = cloud.rhoFluid().value();
+    const scalar deltaT = mesh_.time().deltaTValue();
+    const bool twoD = cloud.twoD();
 
     // Local sums, relative to each particle's own centre
     scalarList sums(nSums*particles.size(), Zero);
@@ -105,8 +165,8 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
         forAll(cells, k)
         {
             const label celli = cells[k];
-            const scalar w =
-                rho[celli]*beta(fractions[k], p.density(), rho[celli])*V[celli];
+            const scalar b = beta(fractions[k], p.density(), rho[celli]);
+            const scalar w = rho[celli]*b*V[celli];
             const vector r(C[celli] - p.position());
             const vector& uc = u[celli];
             const vector rxu(r ^ uc);
@@ -124,19 +184,12 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
             s[iSecond + 3] += w*r.y()*r.y();
             s[iSecond + 4] += w*r.y()*r.z();
             s[iSecond + 5] += w*r.z()*r.z();
+            s[iVolume] += fractions[k]*V[celli];
         }
     }
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
     Pstream::listCombineScatter(sums);
 
-    const scalar deltaT = mesh_.time().deltaTValue();
-    vector g(Zero);
-    if (mesh_.time().foundObject<uniformDimensionedVectorField>("g"))
-    {
-        g = mesh_.time().lookupObject<uniformDimensionedVectorField>("g")
-            .value();
-    }
-    const bool twoD = cloud.twoD();
 
     forAll(particles, i)
     {
@@ -184,11 +237,14 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
             p.setVelocities(P/M - (omega ^ delta), omega);
         }
 
+        // Fluid force, with the hydrostatic buoyancy: the momentum change
+        // less the weight, where the momentum equation holds it
         const vector P0
         (
             M*(p.velocity0() + (p.angularVelocity0() ^ delta))
         );
-        vector F((P - P0)/deltaT - M*g);
+        const scalar heldDensity = p.isFree() ? p.density() : rhoFluid;
+        vector F((P - P0)/deltaT - heldDensity*s[iVolume]*g);
         vector T((L - (I & p.angularVelocity0()))/deltaT);
         if (twoD)
         {

@@ -1,0 +1,148 @@
+"""Case-level tests of pimpleDLMFoam on small meshes: stability and physics
+of settling and rising particles, restart, serial against parallel."""
+
+import pathlib
+import shutil
+
+import numpy as np
+import pytest
+
+from foamcase import Case
+
+HERE = pathlib.Path(__file__).parent
+SPHERE_BOX = HERE / "cases" / "sphereBox"
+DISK = HERE.parent / "tutorials" / "fallingDisk"
+
+
+def sphere_case(tmp_path, env, name, density=2000, settings=None):
+    case = Case.copy(SPHERE_BOX, tmp_path / name, env)
+    case.run("blockMesh")
+    case.set("constant/particleProperties", "particles/sphere/density", density)
+    for (file, entry), value in (settings or {}).items():
+        case.set(file, entry, value)
+    return case
+
+
+def test_neutrally_buoyant_sphere_stays_still(tmp_path, foam_env):
+    case = sphere_case(tmp_path, foam_env, "neutral", density=1000,
+                       settings={("system/controlDict", "endTime"): 0.05})
+    case.run("pimpleDLMFoam")
+    h = case.history()["sphere"]
+    assert len(h) == 10
+    # Position unchanged and velocity zero to round-off
+    assert np.abs(h[:, 1:4] - h[0, 1:4]).max() < 1e-15
+    assert np.abs(h[:, 4:10]).max() < 1e-14
+
+
+def test_rising_and_settling_speeds_agree(tmp_path, foam_env):
+    """Stokes flow (Re ~ 0.15): a sphere of density 500 rises as fast as one of
+    1500 settles in water of 1000, midway between the box's top and bottom."""
+    speeds = {}
+    for density in (500, 1500):
+        case = sphere_case(tmp_path, foam_env, f"rho{density}", density,
+                           {("constant/particleProperties",
+                             "particles/sphere/position"): "(0.0151 0.0149 0.0225)"})
+        case.run("pimpleDLMFoam")
+        h = case.history()["sphere"]
+        assert np.isfinite(h).all()
+        speeds[density] = h[-1, 6]
+        # Terminal: the last 20 % of the run changes by under 1 %
+        late = h[h[:, 0] > 0.08, 6]
+        assert np.ptp(late) < 0.01*abs(late[-1])
+    assert speeds[500] > 0 > speeds[1500]
+    # Equal within 3 % (mixed-cell error at 6 cells per diameter: about 2 %)
+    assert abs(speeds[500] + speeds[1500]) < 0.03*speeds[500]
+
+
+def test_heavy_sphere_starts_with_the_added_mass_acceleration(tmp_path, foam_env):
+    """rho_s/rho_f = 100 from rest: dv/dt = (rho_s - rho_f) g/(rho_s + rho_f/2)
+    while viscous (Basset) forces are still negligible (0.3 % at 0.5 ms)."""
+    case = sphere_case(tmp_path, foam_env, "heavy", 100000,
+                       {("system/controlDict", "deltaT"): 1e-4,
+                        ("system/controlDict", "endTime"): 5e-4})
+    case.run("pimpleDLMFoam")
+    h = case.history()["sphere"]
+    expected = -99/100.5*9.81
+    acceleration = h[:, 6]/h[:, 0]
+    assert acceleration == pytest.approx(expected, rel=0.02)
+
+
+def test_heavy_sphere_is_stable_with_adjustable_time_step(tmp_path, foam_env):
+    case = sphere_case(tmp_path, foam_env, "heavyLong", 100000,
+                       {("system/controlDict", "adjustTimeStep"): "yes",
+                        ("system/controlDict", "endTime"): 0.05})
+    case.run("pimpleDLMFoam")
+    h = case.history()["sphere"]
+    assert np.isfinite(h).all()
+    Uz = h[:, 6]
+    assert (np.diff(Uz) < 0).all()
+    assert np.abs(h[:, 4:6]).max() < 0.01*abs(Uz[-1])
+
+
+def test_restart_continues_the_trajectory(tmp_path, foam_env):
+    full = sphere_case(tmp_path, foam_env, "full")
+    full.run("pimpleDLMFoam")
+
+    restarted = Case.copy(SPHERE_BOX, tmp_path / "restarted", foam_env)
+    restarted.run("blockMesh")
+    shutil.copytree(full.path / "0.05", restarted.path / "0.05")
+    restarted.run("pimpleDLMFoam")
+
+    a = full.history()["sphere"]
+    b = restarted.history("0.05")["sphere"]
+    tail = a[a[:, 0] > 0.05 + 1e-9]
+    assert len(b) == len(tail) == 10
+    # Same trajectory to round-off
+    assert np.abs(b[:, :10] - tail[:, :10]).max() < 1e-12
+
+
+@pytest.mark.parametrize("source", ["sphereBox", "fallingDisk"])
+def test_parallel_matches_serial(tmp_path, foam_env, source):
+    def make(name):
+        if source == "sphereBox":
+            case = Case.copy(SPHERE_BOX, tmp_path / name, foam_env)
+            case.run("blockMesh")
+            case.set("system/controlDict", "endTime", 0.05)
+        else:
+            case = Case.copy(DISK, tmp_path / name, foam_env)
+            case.run("blockMesh")
+            case.set("system/controlDict", "endTime", 0.05)
+            case.set("system/controlDict", "adjustTimeStep", "no")
+            case.set("system/controlDict", "deltaT", 0.005)
+            case.set("system/controlDict", "writeInterval", 0.05)
+            # METIS cuts the channel across its middle: start the disk there
+            case.set("constant/particleProperties", "particles/disk/position",
+                     "(0.1 0.2 0)")
+        # Converged linear solvers: the two runs then differ by round-off
+        for field in ["p_rgh", "p_rghFinal"]:
+            case.set("system/fvSolution", f"solvers/{field}/tolerance", 1e-13)
+            case.set("system/fvSolution", f"solvers/{field}/relTol", 0)
+        case.set("system/fvSolution", "solvers/U/tolerance", 1e-14)
+        return case
+
+    serial = make("serial")
+    serial.run("pimpleDLMFoam")
+
+    parallel = make("parallel")
+    parallel.set("system/controlDict", "writeFormat", "ascii")
+    decompose = parallel.run("decomposePar")
+    assert "metis" in decompose.log
+    parallel.run("pimpleDLMFoam", np=2)
+    parallel.run("reconstructPar")
+
+    # The particle spans both processors
+    for processor in ["processor0", "processor1"]:
+        alpha = parallel.internal_field(f"{processor}/0.05/alpha.solid")
+        assert alpha.max() > 0.5
+
+    name, = serial.history()
+    s = serial.history()[name]
+    p = parallel.history()[name]
+    assert s.shape == p.shape
+    # Displacement, velocity and angular velocity each to 1e-6 relative
+    displacement = s[:, 1:4] - s[0, 1:4] + s[0, 4:7]*s[0, 0]
+    for columns, scale in [(slice(1, 4), np.abs(displacement).max()),
+                           (slice(4, 7), np.abs(s[:, 4:7]).max()),
+                           (slice(7, 10), np.abs(s[:, 7:10]).max())]:
+        assert np.abs(p[:, columns] - s[:, columns]).max() < 1e-6*scale
+    assert (parallel.path / "0.05" / "U").exists()
