@@ -85,9 +85,20 @@ int main(int argc, char *argv[])
         }
 
         particles.move();
-        particles.writeStep();
 
-        runTime.write();
+        if (particles.touchingBoundary())
+        {
+            Info<< nl << "A free particle reached the cells next to a wall:"
+                << " stopping, as particle-wall contact is not modelled."
+                << nl << endl;
+            particles.writeStep(true);
+            runTime.writeAndEnd();
+        }
+        else
+        {
+            particles.writeStep();
+            runTime.write();
+        }
 
         runTime.printExecutionTime(Info);
     }

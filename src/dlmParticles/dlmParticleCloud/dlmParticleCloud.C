@@ -11,6 +11,7 @@
 #include "IFstream.H"
 #include "HashSet.H"
 #include "OSspecific.H"
+#include "emptyPolyPatch.H"
 #include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -215,6 +216,10 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
 
         if (f > 0)
         {
+            if (boundaryCell_[celli] && p.isFree())
+            {
+                touchingBoundary_ = true;
+            }
             if (f < 1 && !cellIsBox_[celli])
             {
                 FatalErrorInFunction
@@ -393,6 +398,8 @@ Foam::dlmParticleCloud::dlmParticleCloud
     ),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
+    boundaryCell_(mesh.nCells(), false),
+    touchingBoundary_(false),
     splitDirections_(Zero),
     alpha_
     (
@@ -479,6 +486,17 @@ Foam::dlmParticleCloud::dlmParticleCloud
         splitDirections_[d] = mesh.solutionD()[d] == 1 ? 1 : 0;
     }
 
+    for (const polyPatch& patch : mesh.boundaryMesh())
+    {
+        if (!patch.coupled() && !isA<emptyPolyPatch>(patch))
+        {
+            for (const label celli : patch.faceCells())
+            {
+                boundaryCell_[celli] = true;
+            }
+        }
+    }
+
     checkParticles();
 
     cells_.setSize(particles_.size());
@@ -514,6 +532,7 @@ void Foam::dlmParticleCloud::move()
 
     const scalar deltaT = mesh_.time().deltaTValue();
 
+    touchingBoundary_ = false;
     forAll(particles_, i)
     {
         dlmParticle& p = particles_[i];
@@ -523,12 +542,13 @@ void Foam::dlmParticleCloud::move()
             updateFractions(i);
         }
     }
+    reduce(touchingBoundary_, orOp<bool>());
 
     updateFields();
 }
 
 
-void Foam::dlmParticleCloud::writeStep()
+void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
 {
     if (Pstream::master())
     {
@@ -568,7 +588,7 @@ void Foam::dlmParticleCloud::writeStep()
         os.flush();
     }
 
-    if (mesh_.time().writeTime())
+    if (forceVTK || mesh_.time().writeTime())
     {
         writeVTK();
     }
