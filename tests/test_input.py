@@ -1,0 +1,100 @@
+"""Bad input stops the solver with a clear error naming the file, the keyword
+and the particle."""
+
+import pathlib
+
+import pytest
+
+from foamcase import Case
+
+HERE = pathlib.Path(__file__).parent
+SPHERE_BOX = HERE / "cases" / "sphereBox"
+DISK = HERE.parent / "tutorials" / "fallingDisk"
+
+HEADER = "FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }\n"
+GOOD = "shape sphere; radius 0.005; density 2000; position (0.015 0.015 0.025);"
+
+
+@pytest.fixture(scope="module")
+def meshed(tmp_path_factory, foam_env):
+    """One meshed copy of each case, copied again per test."""
+    root = tmp_path_factory.mktemp("input")
+    cases = {}
+    for name, source in [("sphereBox", SPHERE_BOX), ("fallingDisk", DISK)]:
+        case = Case.copy(source, root / name, foam_env)
+        case.run("blockMesh")
+        cases[name] = case
+    return cases
+
+
+def run_with(meshed, tmp_path, particles, source="sphereBox", edit=None):
+    case = Case(tmp_path / "case", meshed[source].env)
+    import shutil
+    shutil.copytree(meshed[source].path, case.path)
+    if particles is not None:
+        (case.path / "constant" / "particleProperties").write_text(
+            HEADER + "particles\n{\n" + particles + "\n}\n")
+    if edit:
+        edit(case)
+    result = case.run("pimpleDLMFoam", check=False)
+    assert result.returncode != 0, "the solver accepted bad input"
+    return result.log
+
+
+@pytest.mark.parametrize("particles, expected", [
+    ("sphere { shape sphere; density 2000; position (0.015 0.015 0.025); }",
+     ["'radius'", "particleProperties.particles.sphere"]),
+    ("sphere { shape sphere; radius -0.005; density 2000; position (0.015 0.015 0.025); }",
+     ["radius -0.005", "of particle sphere must be positive", "particleProperties"]),
+    ("sphere { shape sphere; radius 0.005; density 0; position (0.015 0.015 0.025); }",
+     ["density 0 of particle sphere must be positive", "particleProperties"]),
+    ("sphere { shape sphere; raduis 0.005; radius 0.005; density 2000; position (0.015 0.015 0.025); }",
+     ["Unknown keyword 'raduis' for particle sphere", "particleProperties"]),
+    ("sphere { shape cube; radius 0.005; density 2000; position (0.015 0.015 0.025); }",
+     ["cube", "sphere", "disk", "particleProperties"]),
+    ("sphere { shape sphere; radius 0.005; density 2000; position (0.1 0.015 0.025); }",
+     ["Particle sphere", "outside the mesh", "particleProperties"]),
+    ("a { " + GOOD + " } b { shape sphere; radius 0.005; density 2000; position (0.015 0.015 0.033); }",
+     ["Particles a and b", "overlap", "particleProperties"]),
+    ("sphere { " + GOOD + " motion floating; }",
+     ["floating", "free", "fixed", "prescribed"]),
+])
+def test_bad_particle_input(meshed, tmp_path, particles, expected):
+    log = run_with(meshed, tmp_path, particles)
+    for text in expected:
+        assert text in log, f"'{text}' missing from:\n{log[-2000:]}"
+
+
+def test_sphere_on_a_2d_mesh(meshed, tmp_path):
+    log = run_with(meshed, tmp_path,
+                   "ball { shape sphere; radius 0.01; density 2500; position (0.1 0.3 0); }",
+                   source="fallingDisk")
+    assert "Particle ball" in log and "3D but the mesh is 2D" in log
+
+
+def test_disk_on_a_3d_mesh(meshed, tmp_path):
+    log = run_with(meshed, tmp_path,
+                   "coin { shape disk; radius 0.005; density 2500; position (0.015 0.015 0.025); }")
+    assert "Particle coin" in log and "2D but the mesh is 3D" in log
+
+
+def test_unknown_top_level_keyword(meshed, tmp_path):
+    def edit(case):
+        path = case.path / "constant" / "particleProperties"
+        path.write_text(path.read_text() + "surfaceResolutoin 16;\n")
+    log = run_with(meshed, tmp_path, None, edit=edit)
+    assert "Unknown keyword 'surfaceResolutoin'" in log
+
+
+def test_non_positive_viscosity(meshed, tmp_path):
+    def edit(case):
+        case.set("constant/transportProperties", "nu", -1)
+    log = run_with(meshed, tmp_path, None, edit=edit)
+    assert "nu -1 must be positive" in log and "transportProperties" in log
+
+
+def test_missing_rigid_projection(meshed, tmp_path):
+    def edit(case):
+        (case.path / "system" / "fvOptions").unlink()
+    log = run_with(meshed, tmp_path, None, edit=edit)
+    assert "Particle sphere is free but no rigid projection ran" in log

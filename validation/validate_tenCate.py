@@ -1,0 +1,85 @@
+#!/usr/bin/env python3
+"""ten Cate et al. (2002) sphere settling in a box, cases E1-E4, at several
+resolutions (cells per diameter), on 2 processes.
+
+For each run: maximum settling velocity against the experiment's u_max, the
+RMS deviation of the velocity from the digitised curve (up to the end of the
+run), and the wall time. Writes results/tenCate.csv, results/tenCate_<E>.png
+(velocity and gap against time) and results/tenCate_speed_error.png.
+
+    validation/validate_tenCate.py [--cases E1,E2] [--np 2] [N ...]
+                                   (default all cases, N = 6 8 12)
+"""
+
+import argparse
+
+import numpy as np
+
+from common import Case, RESULTS, ROOT, RUNS, foam_environment, timed_run, write_table
+import tenCate
+
+
+def rms_velocity_deviation(case, history):
+    t_ref, u_ref = tenCate.reference_velocity(case)
+    inside = t_ref <= history[-1, 0]
+    u = np.interp(t_ref[inside], history[:, 0], history[:, 6])
+    return np.sqrt(np.mean((u - u_ref[inside])**2))/tenCate.CASES[case][2]
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--cases", default="E1,E2,E3,E4")
+    parser.add_argument("--np", type=int, default=2)
+    parser.add_argument("resolutions", nargs="*", type=int, default=[6, 8, 12])
+    args = parser.parse_args()
+
+    env = foam_environment()
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    table = RESULTS / "tenCate.csv"
+    rows = []
+    if table.exists():
+        lines = table.read_text().splitlines()[1:]
+        rows = [line.split(",") for line in lines]
+    for case_name in args.cases.split(","):
+        histories = {}
+        for n in args.resolutions:
+            case = Case.copy(ROOT / "tutorials" / "tenCate",
+                             RUNS / f"tenCate_{case_name}_{n}", env)
+            seconds = timed_run(case, "./Allrun", case_name, n, args.np)
+            h = case.history()["sphere"]
+            histories[f"{n} cells/d"] = h
+            u_max, error = tenCate.summary(case_name, h)
+            rms = rms_velocity_deviation(case_name, h)
+            rows = [r for r in rows if not (r[0] == case_name and int(r[1]) == n)]
+            rows.append([case_name, n, u_max, tenCate.CASES[case_name][2], error,
+                         rms, seconds, len(h), h[-1, 0]])
+            print(f"{case_name} N={n:3d} u_max={u_max:.5f} error={100*error:+.2f}% "
+                  f"rms={100*rms:.2f}% wall={seconds:.0f}s steps={len(h)} "
+                  f"end={h[-1, 0]:.3f}s", flush=True)
+            write_table(table, ["case", "cellsPerDiameter", "u_max", "u_max_exp",
+                                "relError", "rmsVelocityDeviation", "wallTime_s",
+                                "steps", "endTime_s"], rows)
+        tenCate.plot(case_name, histories, RESULTS / f"tenCate_{case_name}.png")
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for case_name in sorted({r[0] for r in rows}):
+        sel = sorted((r for r in rows if r[0] == case_name), key=lambda r: float(r[6]))
+        wall = [float(r[6]) for r in sel]
+        err = [100*abs(float(r[4])) for r in sel]
+        ax.loglog(wall, err, "o-", label=case_name)
+        for r, w, e in zip(sel, wall, err):
+            ax.annotate(str(r[1]), (w, e), fontsize=7)
+    ax.axhline(3, color="k", ls="--", lw=0.8, label="target 3 %")
+    ax.set_xlabel("wall time on 2 cores [s]")
+    ax.set_ylabel("|u_max error| [%]")
+    ax.set_title("ten Cate: speed against error (labels: cells/d)")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(RESULTS / "tenCate_speed_error.png", dpi=120)
+
+
+if __name__ == "__main__":
+    main()
