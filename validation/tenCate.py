@@ -39,19 +39,19 @@ def plot(case, histories, path):
     t, u = reference_velocity(case)
     ax1.plot(t, u, "k.", label="ten Cate et al. (2002)")
     tg, gap = reference_gap(case)
-    ax2.plot(tg, gap, "k.", label="ten Cate et al. (2002)")
     for label, h in histories.items():
         ax1.plot(h[:, 0], h[:, 6], label=label)
-        # Gap between sphere and bottom over the diameter; the experiment's
-        # curve starts at gap/d = 8.15: shift the time to match
-        g = (h[:, 3] - 0.0075)/0.015
-        shift = np.interp(-gap[0], -g, h[:, 0]) - tg[0] if g[-1] < gap[0] else 0
-        ax2.plot(h[:, 0] - shift, g, label=label)
+        ax2.plot(h[:, 0], (h[:, 3] - 0.0075)/0.015, label=label)
+    # The experiment's curve starts at gap/d = 8.15, the runs at 8: shift the
+    # experiment's time so that its gap/d = 8 falls on t = 0
+    start = (0.1275 - 0.0075)/0.015
+    shift = np.interp(start, gap[::-1], tg[::-1])
+    ax2.plot(tg - shift, gap, "k.", label="ten Cate et al. (2002)")
     ax1.set_xlabel("t [s]")
     ax1.set_ylabel("u_z [m/s]")
     ax1.set_title(f"ten Cate {case}: sphere velocity")
     ax1.legend(fontsize=8)
-    ax2.set_xlabel("t [s] (aligned at gap/d = {:.2f})".format(gap[0]))
+    ax2.set_xlabel("t [s] (experiment aligned at gap/d = 8)")
     ax2.set_ylabel("gap/d")
     ax2.set_title(f"ten Cate {case}: gap to the bottom")
     ax2.legend(fontsize=8)
