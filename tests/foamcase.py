@@ -41,7 +41,7 @@ class Case:
         if np > 1:
             cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe",
                    "-np", str(np)] + cmd + ["-parallel"]
-        name = log or pathlib.Path(cmd[0] if np == 1 else cmd[6]).name
+        name = log or pathlib.Path(cmd[0] if np == 1 else cmd[5]).name
         logfile = self.path / f"log.{name}"
         with open(logfile, "w") as out:
             result = subprocess.run(cmd, cwd=self.path,
