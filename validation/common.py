@@ -46,3 +46,22 @@ def write_table(path, header, rows):
         out.write(",".join(header) + "\n")
         for row in rows:
             out.write(",".join(str(v) for v in row) + "\n")
+
+
+def plot_speed_error(ax, series, target=None):
+    """Error [%] against wall time [s] on log axes, one line per series.
+
+    series: {label: [(wall_s, abs_rel_error, point_label), ...]}
+    """
+    for label, points in series.items():
+        points = sorted(points)
+        wall = [p[0] for p in points]
+        err = [100*p[1] for p in points]
+        ax.loglog(wall, err, "o-", label=label)
+        for w, e, (_, _, name) in zip(wall, err, points):
+            ax.annotate(str(name), (w, e), fontsize=7)
+    if target is not None:
+        ax.axhline(target, color="k", ls="--", lw=0.8, label=f"target {target:g} %")
+    ax.set_xlabel("wall time [s]")
+    ax.set_ylabel("|error| [%]")
+    ax.legend()

@@ -15,7 +15,8 @@ import argparse
 
 import numpy as np
 
-from common import Case, RESULTS, ROOT, RUNS, foam_environment, timed_run, write_table
+from common import (Case, RESULTS, ROOT, RUNS, foam_environment, plot_speed_error,
+                    timed_run, write_table)
 import tenCate
 
 
@@ -65,18 +66,12 @@ def main():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6, 4))
-    for case_name in sorted({r[0] for r in rows}):
-        sel = sorted((r for r in rows if r[0] == case_name), key=lambda r: float(r[6]))
-        wall = [float(r[6]) for r in sel]
-        err = [100*abs(float(r[4])) for r in sel]
-        ax.loglog(wall, err, "o-", label=case_name)
-        for r, w, e in zip(sel, wall, err):
-            ax.annotate(str(r[1]), (w, e), fontsize=7)
-    ax.axhline(3, color="k", ls="--", lw=0.8, label="target 3 %")
-    ax.set_xlabel("wall time on 2 cores [s]")
+    series = {}
+    for r in rows:
+        series.setdefault(r[0], []).append((float(r[6]), abs(float(r[4])), r[1]))
+    plot_speed_error(ax, series, target=3)
     ax.set_ylabel("|u_max error| [%]")
     ax.set_title("ten Cate: speed against error (labels: cells/d)")
-    ax.legend()
     fig.tight_layout()
     fig.savefig(RESULTS / "tenCate_speed_error.png", dpi=120)
 

@@ -26,6 +26,10 @@ Description
        particle the impulse of its weight less its buoyancy;
     3. particle motion and new volume fractions (dlmParticleCloud).
 
+    The time step also keeps the viscous number nu deltaT/h^2 within
+    maxViscousNumber (system/controlDict, default 4), where the projection
+    is stable.
+
     Inputs: constant/transportProperties (rho, nu of the fluid), constant/g,
     constant/particleProperties, system/fvOptions (rigidProjection), fields
     U and p_rgh.
@@ -60,6 +64,10 @@ int main(int argc, char *argv[])
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
 
+    // Smallest squared distance between neighbouring cell centres
+    const scalar minDeltaSqr = gMin(magSqr(mesh.delta()().primitiveField()));
+    #include "viscousNumber.H"
+
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
     Info<< "\nStarting time loop\n" << endl;
@@ -69,6 +77,7 @@ int main(int argc, char *argv[])
         #include "readTimeControls.H"
         #include "CourantNo.H"
         #include "setDeltaT.H"
+        #include "viscousNumber.H"
 
         ++runTime;
 

@@ -21,6 +21,14 @@ using namespace Foam;
 namespace
 {
 
+const wordList mixedCellsTypes
+({
+    "interpolated",
+    "massWeighted",
+    "volumeWeighted"
+});
+
+
 struct Moments
 {
     vector momentum;
@@ -81,7 +89,7 @@ void runConservation()
     // The case's particle has density 3: ratios 3 and 0.5
     for (const scalar rhoFluid : {1.0, 6.0})
     {
-        for (const word mixedCells : {"massWeighted", "volumeWeighted"})
+        for (const word mixedCells : mixedCellsTypes)
         {
             dlmParticleCloud cloud(mesh, dimensionedScalar("rho", dimDensity, rhoFluid));
             tmp<volVectorField> tU(zeroVelocity(mesh));
@@ -98,7 +106,8 @@ void runConservation()
             }
 
             const Moments before(moments(cloud.rho(), U));
-            projection(mesh, mixedCells)->correct(U);
+            autoPtr<fv::option> rigidProjection(projection(mesh, mixedCells));
+            rigidProjection->correct(U);
             const Moments after(moments(cloud.rho(), U));
 
             INFO(mixedCells << ", density ratio " << 3/rhoFluid);
@@ -108,6 +117,27 @@ void runConservation()
                 mag(after.angularMomentum - before.angularMomentum)
               < 1e-13*before.scale
             );
+
+            // The force that keeps the particle rigid is internal to the
+            // mixture: no net force or torque
+            if (mixedCells == "interpolated")
+            {
+                const volVectorField& f =
+                    mesh.lookupObject<volVectorField>("rigidForce");
+                vector netForce(Zero);
+                vector netTorque(Zero);
+                scalar scale = 0;
+                forAll(f, celli)
+                {
+                    const scalar V = mesh.V()[celli];
+                    netForce += V*f[celli];
+                    netTorque += V*(mesh.C()[celli] ^ f[celli]);
+                    scale += V*mag(f[celli]);
+                }
+                CHECK(scale > 0);
+                CHECK(mag(netForce) < 1e-13*scale);
+                CHECK(mag(netTorque) < 1e-13*scale);
+            }
 
             // Cells fully inside move rigidly with the particle: velocity
             // differences are omega x separations
@@ -152,7 +182,7 @@ void runRigidUnchanged()
     const vector U0 = twoD(mesh) ? vector(0.3, -0.2, 0) : vector(0.3, -0.2, 0.1);
     const vector omega0 = twoD(mesh) ? vector(0, 0, 2) : vector(1, -2, 0.5);
 
-    for (const word mixedCells : {"massWeighted", "volumeWeighted"})
+    for (const word mixedCells : mixedCellsTypes)
     {
         tmp<volVectorField> tU(zeroVelocity(mesh));
         volVectorField& U = tU.ref();

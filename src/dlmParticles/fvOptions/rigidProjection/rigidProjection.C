@@ -8,6 +8,10 @@
 #include "dlmParticleCloud.H"
 #include "uniformDimensionedFields.H"
 #include "fvMatrices.H"
+#include "emptyFvPatch.H"
+#include "indexedOctree.H"
+#include "treeDataCell.H"
+#include "scalarMatrices.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -24,14 +28,16 @@ namespace fv
 const Foam::Enum<Foam::fv::rigidProjection::mixedCellsType>
 Foam::fv::rigidProjection::mixedCellsTypeNames
 ({
-    { mixedCellsType::volumeWeighted, "volumeWeighted" },
+    { mixedCellsType::interpolated, "interpolated" },
     { mixedCellsType::massWeighted, "massWeighted" },
+    { mixedCellsType::volumeWeighted, "volumeWeighted" },
 });
 
 
 namespace
 {
-    // Layout of the per-particle sums reduced over processors
+    // Layout of the per-particle sums of the blended projection, reduced
+    // over processors
     enum sumIndex
     {
         iMass = 0,          // sum w
@@ -42,6 +48,185 @@ namespace
         iVolume = 16,       // sum f V
         nSums = 17
     };
+
+    // Layout of the per-particle sums of the interpolated projection:
+    // the momentum balance a11 U - [q]x Omega = b1,
+    // [ar]x U + A22 Omega = b2, and the particle's own mass and inertia
+    enum interpolatedSumIndex
+    {
+        jA11 = 0,           // sum m a
+        jMq = 1,            // sum m q (3)
+        jMar = 4,           // sum m a r (3)
+        jA22 = 7,           // sum m ((r.q) 1 - q r) (9)
+        jB1 = 16,           // sum m (u - u_samples) (3)
+        jB2 = 19,           // sum m r x (u - u_samples) (3)
+        jForce = 22,        // sum V f (3)
+        jTorque = 25,       // sum V r x f (3)
+        jMass = 28,         // sum rho_s phi V
+        jVolume = 29,       // sum phi V
+        jInertia = 30,      // sum rho_s phi V (|r|^2 1 - r r) (6)
+        nInterpolatedSums = 36
+    };
+
+    // Layout of the sums that remove the net force of the carried force
+    enum restrictSumIndex
+    {
+        kMass = 0,          // sum m
+        kFirst = 1,         // sum m r (3)
+        kSecond = 4,        // sum m (|r|^2 1 - r r) (9)
+        kForce = 13,        // sum V f (3)
+        kTorque = 16,       // sum V r x f (3)
+        nRestrictSums = 19
+    };
+
+    inline Foam::vector sumVector(const Foam::scalar* s)
+    {
+        return Foam::vector(s[0], s[1], s[2]);
+    }
+
+    inline void addVector(Foam::scalar* s, const Foam::vector& v)
+    {
+        for (Foam::direction d = 0; d < 3; ++d)
+        {
+            s[d] += v[d];
+        }
+    }
+
+    inline void addTensor(Foam::scalar* s, const Foam::tensor& t)
+    {
+        for (Foam::direction d = 0; d < 9; ++d)
+        {
+            s[d] += t[d];
+        }
+    }
+
+    inline Foam::tensor sumTensor(const Foam::scalar* s)
+    {
+        Foam::tensor t;
+        for (Foam::direction d = 0; d < 9; ++d)
+        {
+            t[d] = s[d];
+        }
+        return t;
+    }
+
+    // Matrix [v]x with [v]x w = v x w
+    inline Foam::tensor crossMatrix(const Foam::vector& v)
+    {
+        return Foam::tensor
+        (
+            0, -v.z(), v.y(),
+            v.z(), 0, -v.x(),
+            -v.y(), v.x(), 0
+        );
+    }
+
+    // Solve [A11 A12; A21 A22] (U, Omega) = (b1, b2) for the rigid
+    // velocities; in 2D only U.x, U.y and Omega.z
+    void solveRigid
+    (
+        const Foam::tensor& A11,
+        const Foam::tensor& A12,
+        const Foam::tensor& A21,
+        const Foam::tensor& A22,
+        const Foam::vector& b1,
+        const Foam::vector& b2,
+        const bool twoD,
+        Foam::vector& U,
+        Foam::vector& omega
+    )
+    {
+        using namespace Foam;
+
+        const labelList unknowns
+        (
+            twoD ? labelList({0, 1, 5}) : labelList({0, 1, 2, 3, 4, 5})
+        );
+        const label n = unknowns.size();
+
+        scalarSquareMatrix A(n);
+        scalarField x(n);
+        for (label row = 0; row < n; ++row)
+        {
+            const label i = unknowns[row];
+            for (label col = 0; col < n; ++col)
+            {
+                const label j = unknowns[col];
+                const tensor& block =
+                    i < 3
+                  ? (j < 3 ? A11 : A12)
+                  : (j < 3 ? A21 : A22);
+                A(row, col) = block(i % 3, j % 3);
+            }
+            x[row] = i < 3 ? b1[i] : b2[i - 3];
+        }
+
+        LUsolve(A, x);
+
+        U = Zero;
+        omega = Zero;
+        for (label row = 0; row < n; ++row)
+        {
+            const label i = unknowns[row];
+            if (i < 3)
+            {
+                U[i] = x[row];
+            }
+            else
+            {
+                omega[i - 3] = x[row];
+            }
+        }
+    }
+
+    // Distance t along the unit direction e from x0 (outside the shape) to
+    // the surface, given that x0 + L e is inside: regula falsi (Illinois)
+    Foam::scalar surfaceCrossing
+    (
+        const Foam::particleShape& shape,
+        const Foam::point& X,
+        const Foam::tensor& Rt,
+        const Foam::point& x0,
+        const Foam::vector& e,
+        const Foam::scalar L
+    )
+    {
+        using namespace Foam;
+
+        vector normal;
+        scalar ta = 0;
+        scalar tb = L;
+        scalar da = shape.signedDistance(Rt & (x0 - X), normal);
+        scalar db = shape.signedDistance(Rt & (x0 + L*e - X), normal);
+        if (da <= 0)
+        {
+            return 0;
+        }
+
+        scalar t = ta;
+        for (label iter = 0; iter < 60; ++iter)
+        {
+            t = (ta*db - tb*da)/(db - da);
+            const scalar d = shape.signedDistance(Rt & (x0 + t*e - X), normal);
+            if (mag(d) < 1e-12*L)
+            {
+                break;
+            }
+            if (d > 0)
+            {
+                ta = t;
+                da = d;
+                db *= 0.5;
+            }
+            else
+            {
+                tb = t;
+                db = d;
+                da *= 0.5;
+            }
+        }
+        return t;
+    }
 }
 
 
@@ -60,6 +245,297 @@ Foam::vector Foam::fv::rigidProjection::gravity() const
 }
 
 
+void Foam::fv::rigidProjection::updateRegions()
+{
+    const label timeIndex = mesh_.time().timeIndex();
+    if
+    (
+        mixedCells_ != mixedCellsType::interpolated
+     || regionTimeIndex_ == timeIndex
+    )
+    {
+        return;
+    }
+
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const label nParticles = cloud.particles().size();
+
+    regionCells_.setSize(nParticles);
+    regionWeights_.setSize(nParticles);
+    regionArms_.setSize(nParticles);
+    sampleStarts_.setSize(nParticles);
+    sampleCells_.setSize(nParticles);
+    sampleFaces_.setSize(nParticles);
+    sampleCoeffs_.setSize(nParticles);
+
+    for (label i = 0; i < nParticles; ++i)
+    {
+        findRegion(i);
+    }
+
+    restrictForce();
+    heldForce_ = force_.primitiveField();
+    regionTimeIndex_ = timeIndex;
+}
+
+
+void Foam::fv::rigidProjection::findRegion(const label i)
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const dlmParticle& p = cloud.particles()[i];
+    const particleShape& shape = p.shape();
+    const point& X = p.position();
+    const tensor Rt(p.R().T());
+
+    const vectorField& C = mesh_.C();
+    const labelUList& owner = mesh_.owner();
+    const labelUList& neighbour = mesh_.neighbour();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+
+    DynamicList<label>& cells = regionCells_[i];
+    DynamicList<scalar>& weights = regionWeights_[i];
+    DynamicList<vector>& arms = regionArms_[i];
+    DynamicList<label>& starts = sampleStarts_[i];
+    DynamicList<label>& sampleCells = sampleCells_[i];
+    DynamicList<labelPair>& sampleFaces = sampleFaces_[i];
+    DynamicList<scalar>& sampleCoeffs = sampleCoeffs_[i];
+    cells.clear();
+    weights.clear();
+    arms.clear();
+    starts.clear();
+    sampleCells.clear();
+    sampleFaces.clear();
+    sampleCoeffs.clear();
+
+    const scalar reach = shape.boundingRadius() + 2*cellSizeMax_;
+    point lo(X - reach*vector::one);
+    point hi(X + reach*vector::one);
+    if (cloud.twoD())
+    {
+        lo.z() = mesh_.bounds().min().z();
+        hi.z() = mesh_.bounds().max().z();
+    }
+    const labelList candidates
+    (
+        mesh_.cellTree().findBox(treeBoundBox(lo, hi))
+    );
+
+    // Neighbours of a cell across its faces: direction, sample, inside
+    struct neighbourSample
+    {
+        vector delta;
+        label celli;
+        labelPair face;
+        bool inside;
+    };
+    DynamicList<neighbourSample> nbrs(6);
+
+    vector normal;
+    for (const label celli : candidates)
+    {
+        const scalar d0 = shape.signedDistance(Rt & (C[celli] - X), normal);
+
+        if (d0 < 0)
+        {
+            cells.append(celli);
+            weights.append(1);
+            arms.append(C[celli] - X);
+            starts.append(sampleCells.size());
+            continue;
+        }
+
+        nbrs.clear();
+        bool anyInside = false;
+        for (const label facei : mesh_.cells()[celli])
+        {
+            neighbourSample nbr{Zero, -1, labelPair(-1, -1), false};
+            if (mesh_.isInternalFace(facei))
+            {
+                nbr.celli =
+                    owner[facei] == celli ? neighbour[facei] : owner[facei];
+                nbr.delta = C[nbr.celli] - C[celli];
+            }
+            else
+            {
+                const label patchi = patches.whichPatch(facei);
+                const fvPatch& fp = mesh_.boundary()[patchi];
+                if (isA<emptyFvPatch>(fp))
+                {
+                    continue;
+                }
+                const label localFacei = facei - fp.start();
+                nbr.face = labelPair(patchi, localFacei);
+                nbr.delta =
+                    fp.coupled()
+                  ? coupledDeltas_[patchi][localFacei]
+                  : fp.Cf()[localFacei] - C[celli];
+            }
+            if (nbr.celli >= 0 || mesh_.boundary()[nbr.face.first()].coupled())
+            {
+                nbr.inside =
+                    shape.signedDistance
+                    (
+                        Rt & (C[celli] + nbr.delta - X),
+                        normal
+                    ) < 0;
+            }
+            anyInside = anyInside || nbr.inside;
+            nbrs.append(nbr);
+        }
+
+        if (!anyInside)
+        {
+            continue;
+        }
+
+        // Normal at the surface point nearest to the cell centre
+        shape.signedDistance(Rt & (C[celli] - X), normal);
+        const vector n(p.R() & normal);
+
+        // One linear profile per grid line from the cell to an inside
+        // neighbour, between the surface and the opposite neighbour
+        scalar weightSum = 0;
+        scalar a = 0;
+        vector q(Zero);
+        const label start = sampleCells.size();
+        for (const neighbourSample& in : nbrs)
+        {
+            if (!in.inside)
+            {
+                continue;
+            }
+            const scalar L = mag(in.delta);
+            const vector e(in.delta/L);
+
+            const neighbourSample* out = nullptr;
+            scalar cosOut = -0.7;
+            for (const neighbourSample& cand : nbrs)
+            {
+                const scalar c = (e & cand.delta)/mag(cand.delta);
+                if (!cand.inside && c < cosOut)
+                {
+                    out = &cand;
+                    cosOut = c;
+                }
+            }
+            if (!out)
+            {
+                continue;
+            }
+
+            const scalar t = surfaceCrossing(shape, X, Rt, C[celli], e, L);
+            const scalar Lout = -(e & out->delta);
+            const scalar aLine = Lout/(t + Lout);
+            const scalar w = sqr(e & n) + SMALL;
+
+            weightSum += w;
+            a += w*aLine;
+            q += w*aLine*(C[celli] + t*e - X);
+            sampleCells.append(out->celli);
+            sampleFaces.append(out->face);
+            sampleCoeffs.append(w*(1 - aLine));
+        }
+
+        if (weightSum > 0)
+        {
+            cells.append(celli);
+            weights.append(a/weightSum);
+            arms.append(q/weightSum);
+            starts.append(start);
+            for (label k = start; k < sampleCoeffs.size(); ++k)
+            {
+                sampleCoeffs[k] /= weightSum;
+            }
+        }
+        else
+        {
+            sampleCells.setSize(start);
+            sampleFaces.setSize(start);
+            sampleCoeffs.setSize(start);
+        }
+    }
+    starts.append(sampleCells.size());
+}
+
+
+void Foam::fv::rigidProjection::restrictForce()
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const PtrList<dlmParticle>& particles = cloud.particles();
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const scalarField& rho = cloud.rho();
+    vectorField& f = force_.primitiveFieldRef();
+
+    boolList forced(mesh_.nCells(), false);
+    forAll(particles, i)
+    {
+        for (const label celli : regionCells_[i])
+        {
+            forced[celli] = true;
+        }
+    }
+    forAll(f, celli)
+    {
+        if (!forced[celli])
+        {
+            f[celli] = Zero;
+        }
+    }
+
+    scalarList sums(nRestrictSums*particles.size(), Zero);
+    forAll(particles, i)
+    {
+        scalar* s = &sums[nRestrictSums*i];
+        const point& X = particles[i].position();
+        for (const label celli : regionCells_[i])
+        {
+            const scalar m = rho[celli]*V[celli];
+            const vector r(C[celli] - X);
+            s[kMass] += m;
+            addVector(s + kFirst, m*r);
+            addTensor(s + kSecond, m*(magSqr(r)*tensor::I - r*r));
+            addVector(s + kForce, V[celli]*f[celli]);
+            addVector(s + kTorque, V[celli]*(r ^ f[celli]));
+        }
+    }
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+
+    forAll(particles, i)
+    {
+        const scalar* s = &sums[nRestrictSums*i];
+        if (!particles[i].isFree() || s[kMass] <= 0)
+        {
+            continue;
+        }
+
+        vector a, beta;
+        solveRigid
+        (
+            s[kMass]*tensor::I,
+            -crossMatrix(sumVector(s + kFirst)),
+            crossMatrix(sumVector(s + kFirst)),
+            sumTensor(s + kSecond),
+            sumVector(s + kForce),
+            sumVector(s + kTorque),
+            cloud.twoD(),
+            a,
+            beta
+        );
+
+        const point& X = particles[i].position();
+        for (const label celli : regionCells_[i])
+        {
+            f[celli] -= rho[celli]*(a + (beta ^ (C[celli] - X)));
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fv::rigidProjection::rigidProjection
@@ -71,10 +547,40 @@ Foam::fv::rigidProjection::rigidProjection
 )
 :
     option(name, modelType, dict, mesh),
-    mixedCells_(mixedCellsType::massWeighted)
+    mixedCells_(mixedCellsType::interpolated),
+    forceRelaxation_(1),
+    force_
+    (
+        IOobject
+        (
+            "rigidForce",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedVector(dimDensity*dimAcceleration, Zero)
+    ),
+    heldForce_(force_.primitiveField()),
+    cellSizeMax_(gMax(mag(mesh.delta()().primitiveField()))),
+    coupledDeltas_(mesh.boundary().size()),
+    regionTimeIndex_(-1)
 {
     fieldNames_.setSize(1, "U");
     applied_.setSize(1, false);
+
+    forAll(mesh.boundary(), patchi)
+    {
+        if (mesh.boundary()[patchi].coupled())
+        {
+            coupledDeltas_.set
+            (
+                patchi,
+                new vectorField(mesh.boundary()[patchi].delta())
+            );
+        }
+    }
 
     read(dict);
 }
@@ -90,8 +596,13 @@ bool Foam::fv::rigidProjection::read(const dictionary& dict)
         (
             "mixedCells",
             coeffs_,
-            mixedCellsType::massWeighted
+            mixedCellsType::interpolated
         );
+        forceRelaxation_ = coeffs_.getOrDefault<scalar>("forceRelaxation", 1);
+        force_.writeOpt() =
+            mixedCells_ == mixedCellsType::interpolated
+          ? IOobject::AUTO_WRITE
+          : IOobject::NO_WRITE;
         return true;
     }
 
@@ -111,11 +622,13 @@ void Foam::fv::rigidProjection::addSup
     const vector g(gravity());
     const scalar rhoFluid = cloud.rhoFluid().value();
 
-    DimensionedField<vector, volMesh> weight
+    updateRegions();
+    heldForce_ = force_.primitiveField();
+
+    DimensionedField<vector, volMesh> source
     (
-        IOobject("reducedWeight", mesh_.time().timeName(), mesh_),
-        mesh_,
-        dimensionedVector(eqn.dimensions()/dimVolume, Zero)
+        IOobject("rigidSource", mesh_.time().timeName(), mesh_),
+        force_()
     );
 
     forAll(cloud.particles(), i)
@@ -128,16 +641,236 @@ void Foam::fv::rigidProjection::addSup
             const DynamicList<scalar>& fractions = cloud.fractions(i);
             forAll(cells, k)
             {
-                weight[cells[k]] += fractions[k]*density;
+                source[cells[k]] += fractions[k]*density;
             }
         }
     }
 
-    eqn += weight;
+    eqn += source;
 }
 
 
 void Foam::fv::rigidProjection::correct(volVectorField& U)
+{
+    if (mixedCells_ == mixedCellsType::interpolated)
+    {
+        updateRegions();
+        correctInterpolated(U);
+    }
+    else
+    {
+        correctBlended(U);
+    }
+
+    U.correctBoundaryConditions();
+    mesh_.lookupObjectRef<dlmParticleCloud>("particles").setProjected();
+}
+
+
+void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
+{
+    dlmParticleCloud& cloud =
+        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
+    PtrList<dlmParticle>& particles = cloud.particles();
+
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const scalarField& rho = cloud.rho();
+    vectorField& u = U.primitiveFieldRef();
+    vectorField& f = force_.primitiveFieldRef();
+
+    const vector g(gravity());
+    const scalar rhoFluid = cloud.rhoFluid().value();
+    const scalar deltaT = mesh_.time().deltaTValue();
+    const bool twoD = cloud.twoD();
+
+    // Values across coupled faces, fetched once per patch
+    PtrList<vectorField> neighbourValues(mesh_.boundary().size());
+    auto sampleValue = [&](const label i, const label k) -> vector
+    {
+        const label celli = sampleCells_[i][k];
+        if (celli >= 0)
+        {
+            return u[celli];
+        }
+        const labelPair& face = sampleFaces_[i][k];
+        const fvPatchVectorField& pf = U.boundaryField()[face.first()];
+        if (pf.coupled())
+        {
+            if (!neighbourValues.set(face.first()))
+            {
+                neighbourValues.set
+                (
+                    face.first(),
+                    pf.patchNeighbourField().ptr()
+                );
+            }
+            return neighbourValues[face.first()][face.second()];
+        }
+        return pf[face.second()];
+    };
+
+    // Velocity of the samples of forced cell k of particle i, as weighted
+    auto sampledVelocity = [&](const label i, const label k) -> vector
+    {
+        vector sum(Zero);
+        for
+        (
+            label s = sampleStarts_[i][k];
+            s < sampleStarts_[i][k + 1];
+            ++s
+        )
+        {
+            sum += sampleCoeffs_[i][s]*sampleValue(i, s);
+        }
+        return sum;
+    };
+
+    scalarList sums(nInterpolatedSums*particles.size(), Zero);
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        const point& X = p.position();
+        scalar* s = &sums[nInterpolatedSums*i];
+
+        const DynamicList<label>& cells = regionCells_[i];
+        forAll(cells, k)
+        {
+            const label celli = cells[k];
+            const scalar m = rho[celli]*V[celli];
+            const scalar a = regionWeights_[i][k];
+            const vector& q = regionArms_[i][k];
+            const vector r(C[celli] - X);
+            const vector d(u[celli] - sampledVelocity(i, k));
+
+            s[jA11] += m*a;
+            addVector(s + jMq, m*q);
+            addVector(s + jMar, m*a*r);
+            addTensor(s + jA22, m*((r & q)*tensor::I - q*r));
+            addVector(s + jB1, m*d);
+            addVector(s + jB2, m*(r ^ d));
+            addVector(s + jForce, V[celli]*heldForce_[celli]);
+            addVector(s + jTorque, V[celli]*(r ^ heldForce_[celli]));
+        }
+
+        const DynamicList<label>& covered = cloud.cells(i);
+        const DynamicList<scalar>& fractions = cloud.fractions(i);
+        forAll(covered, k)
+        {
+            const label celli = covered[k];
+            const scalar m = p.density()*fractions[k]*V[celli];
+            const vector r(C[celli] - X);
+            s[jMass] += m;
+            s[jVolume] += fractions[k]*V[celli];
+            const symmTensor J(m*(magSqr(r)*symmTensor::I - sqr(r)));
+            for (direction d = 0; d < 6; ++d)
+            {
+                s[jInertia + d] += J[d];
+            }
+        }
+    }
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+
+    // Targets from the provisional velocity first: samples may be forced
+    // cells of another particle
+    List<vectorField> targets(particles.size());
+    forAll(particles, i)
+    {
+        dlmParticle& p = particles[i];
+        const scalar* s = &sums[nInterpolatedSums*i];
+
+        if (s[jA11] <= 0)
+        {
+            FatalErrorInFunction
+                << "Particle " << p.name() << " covers no cell centre"
+                << exit(FatalError);
+        }
+
+        const tensor A11(s[jA11]*tensor::I);
+        const tensor A12(-crossMatrix(sumVector(s + jMq)));
+        const tensor A21(crossMatrix(sumVector(s + jMar)));
+        const tensor A22(sumTensor(s + jA22));
+        const vector b1(sumVector(s + jB1));
+        const vector b2(sumVector(s + jB2));
+
+        if (p.isFree())
+        {
+            vector Up, omega;
+            solveRigid(A11, A12, A21, A22, b1, b2, twoD, Up, omega);
+            p.setVelocities(Up, omega);
+        }
+
+        const vector& Up = p.velocity();
+        const vector& omega = p.angularVelocity();
+        const scalar M = s[jMass];
+        symmTensor I;
+        for (direction d = 0; d < 6; ++d)
+        {
+            I[d] = s[jInertia + d];
+        }
+
+        vector F, T;
+        if (p.isFree())
+        {
+            F = M*(Up - p.velocity0())/deltaT - p.density()*s[jVolume]*g;
+            T = (I & (omega - p.angularVelocity0()))/deltaT;
+        }
+        else
+        {
+            // Force holding the particle: the carried force and this
+            // correction's change, (A x - b)/dt
+            const vector holdForce
+            (
+                sumVector(s + jForce)
+              + forceRelaxation_*((A11 & Up) + (A12 & omega) - b1)/deltaT
+            );
+            const vector holdTorque
+            (
+                sumVector(s + jTorque)
+              + forceRelaxation_*((A21 & Up) + (A22 & omega) - b2)/deltaT
+            );
+            F =
+                s[jA11]*(Up - p.velocity0())/deltaT
+              - holdForce
+              - rhoFluid*s[jVolume]*g;
+            T = (I & (omega - p.angularVelocity0()))/deltaT - holdTorque;
+        }
+        if (twoD)
+        {
+            F.z() = 0;
+            T = vector(0, 0, T.z());
+        }
+        p.setLoads(F, T);
+
+        const DynamicList<label>& cells = regionCells_[i];
+        vectorField& target = targets[i];
+        target.setSize(cells.size());
+        forAll(cells, k)
+        {
+            target[k] =
+                regionWeights_[i][k]*Up
+              + (omega ^ regionArms_[i][k])
+              + sampledVelocity(i, k);
+        }
+    }
+
+    forAll(particles, i)
+    {
+        const DynamicList<label>& cells = regionCells_[i];
+        forAll(cells, k)
+        {
+            const label celli = cells[k];
+            f[celli] =
+                heldForce_[celli]
+              + forceRelaxation_*rho[celli]*(targets[i][k] - u[celli])/deltaT;
+            u[celli] = targets[i][k];
+        }
+    }
+}
+
+
+void Foam::fv::rigidProjection::correctBlended(volVectorField& U)
 {
     dlmParticleCloud& cloud =
         mesh_.lookupObjectRef<dlmParticleCloud>("particles");
@@ -266,9 +999,6 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
                 beta(fractions[k], p.density(), rho[celli])*(us - u[celli]);
         }
     }
-
-    U.correctBoundaryConditions();
-    cloud.setProjected();
 }
 
 
