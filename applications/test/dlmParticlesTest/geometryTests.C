@@ -50,13 +50,15 @@ scalar quadratureUnitCube
 
 
 // Sum of fraction times cell volume over a grid of cubes of side h around
-// the shape at X (2D: one layer of depth 1, split only in x and y)
+// the shape at X (2D: one layer of depth 1, split only in x and y), with the
+// shape's own fraction or the general subdivision down to R/32
 scalar gridVolume
 (
     const particleShape& shape,
     const point& X,
     const scalar h,
-    const bool twoD
+    const bool twoD,
+    const bool subdivide = false
 )
 {
     const scalar R = shape.boundingRadius();
@@ -79,8 +81,14 @@ scalar gridVolume
                     lo.z() = X.z() - 0.5;
                 }
                 const boundBox bb(lo, lo + vector(h, h, hz));
-                sum += shape.boxFraction(bb, X, tensor::I, split, R/32)
-                      *bb.volume();
+                const scalar f =
+                    subdivide
+                  ? shape.particleShape::boxFraction
+                    (
+                        bb, X, tensor::I, split, R/32
+                    )
+                  : shape.boxFraction(bb, X, tensor::I, split, R/32);
+                sum += f*bb.volume();
             }
         }
     }
@@ -191,7 +199,12 @@ TEST_CASE("sphere fractions integrate to its volume", "[geometry]")
                 h*rnd.sample01<scalar>()
             );
             INFO("cells per diameter " << cellsPerDiameter);
-            CHECK(gridVolume(*shape, X, h, false)/exact == Approx(1).epsilon(1e-3));
+            CHECK(gridVolume(*shape, X, h, false)/exact == Approx(1).epsilon(1e-9));
+            CHECK
+            (
+                gridVolume(*shape, X, h, false, true)/exact
+             == Approx(1).epsilon(1e-3)
+            );
         }
     }
 }
@@ -210,8 +223,86 @@ TEST_CASE("disk fractions integrate to its area", "[geometry]")
     {
         const scalar h = 2*R/cellsPerDiameter;
         const point X(h*rnd.sample01<scalar>(), h*rnd.sample01<scalar>(), 0);
-        CHECK(gridVolume(*shape, X, h, true)/exact == Approx(1).epsilon(1e-3));
+        CHECK(gridVolume(*shape, X, h, true)/exact == Approx(1).epsilon(1e-12));
+        CHECK
+        (
+            gridVolume(*shape, X, h, true, true)/exact
+         == Approx(1).epsilon(1e-3)
+        );
     }
+}
+
+
+TEST_CASE("circle-rectangle areas in closed form", "[geometry]")
+{
+    using namespace cutCellFraction;
+    const scalar pi = constant::mathematical::pi;
+    const scalar rho = 0.7;
+
+    CHECK(circleRectangleArea(rho, -1, 1, -1, 1) == Approx(pi*sqr(rho)));
+    CHECK(circleRectangleArea(rho, 0, 1, 0, 1) == Approx(0.25*pi*sqr(rho)));
+    CHECK(circleRectangleArea(rho, 1, 2, -1, 1) == 0);
+
+    // Circular segment beyond z = rho/2
+    const scalar segment = sqr(rho)*(std::acos(0.5) - 0.5*std::sqrt(0.75));
+    CHECK(circleRectangleArea(rho, -1, 1, 0.5*rho, 1) == Approx(segment));
+
+    // Random rectangles against a fine midpoint rule in y of the chord
+    Random rnd(11);
+    for (label sample = 0; sample < 20; ++sample)
+    {
+        const scalar y0 = 2*rnd.sample01<scalar>() - 1;
+        const scalar y1 = y0 + rnd.sample01<scalar>();
+        const scalar z0 = 2*rnd.sample01<scalar>() - 1;
+        const scalar z1 = z0 + rnd.sample01<scalar>();
+        const label n = 200000;
+        scalar sum = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar y = y0 + (i + 0.5)*(y1 - y0)/n;
+            if (mag(y) < rho)
+            {
+                const scalar s = std::sqrt(sqr(rho) - sqr(y));
+                sum += max(min(z1, s) - max(z0, -s), scalar(0));
+            }
+        }
+        sum *= (y1 - y0)/n;
+        CHECK(circleRectangleArea(rho, y0, y1, z0, z1) == Approx(sum).margin(1e-8));
+    }
+}
+
+
+TEST_CASE("sphere-box volumes agree with fine subdivision", "[geometry]")
+{
+    const scalar R = 1;
+    autoPtr<particleShape> shape(makeShape("sphere", R));
+    const vector split(1, 1, 1);
+
+    // Boxes of a cell's size (8 per diameter) cut by the surface
+    Random rnd(5);
+    label nCut = 0;
+    for (label sample = 0; sample < 200 && nCut < 20; ++sample)
+    {
+        const scalar h = 0.25;
+        const point lo
+        (
+            (2*rnd.sample01<vector>() - vector::one)*(R + h) - 0.5*h*vector::one
+        );
+        const boundBox bb(lo, lo + h*vector::one);
+        const scalar exact =
+            shape->boxFraction(bb, Zero, tensor::I, split, R/32);
+        if (exact <= 0 || exact >= 1)
+        {
+            continue;
+        }
+        ++nCut;
+        const scalar fine = shape->particleShape::boxFraction
+        (
+            bb, Zero, tensor::I, split, R/1024
+        );
+        CHECK(exact == Approx(fine).margin(2e-6));
+    }
+    CHECK(nCut == 20);
 }
 
 

@@ -5,8 +5,162 @@
 \*---------------------------------------------------------------------------*/
 
 #include "cutCellFraction.H"
+#include "mathematicalConstants.H"
+#include "FixedList.H"
+#include "DynamicList.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+    using Foam::scalar;
+
+    // Integral of the half chord sqrt(rho^2 - y^2) from -rho to y
+    scalar halfChordIntegral(const scalar rho, const scalar y)
+    {
+        const scalar t = Foam::min(Foam::max(y/rho, -1.0), 1.0);
+        return
+            0.5*Foam::sqr(rho)
+           *(t*Foam::sqrt(1 - t*t) + Foam::asin(t) + 0.5*Foam::constant::mathematical::pi);
+    }
+
+    // Area of the circle of radius rho about the origin with y < a, z < b
+    scalar quadrantArea(const scalar rho, const scalar a, const scalar b)
+    {
+        if (a <= -rho || b <= -rho)
+        {
+            return 0;
+        }
+        // Each slice y has the chord [-s, s], s = sqrt(rho^2 - y^2), of
+        // which z < b keeps s + clamp(b, -s, s)
+        const scalar upToA = halfChordIntegral(rho, a);
+        if (b >= rho)
+        {
+            return 2*upToA;
+        }
+
+        const scalar yb = Foam::sqrt(rho*rho - b*b);
+        const scalar sign = b >= 0 ? 1 : -1;
+        scalar clamped = sign*halfChordIntegral(rho, Foam::min(a, -yb));
+        if (a > -yb)
+        {
+            clamped += b*(Foam::min(a, yb) + yb);
+        }
+        if (a > yb)
+        {
+            clamped += sign*(upToA - halfChordIntegral(rho, yb));
+        }
+        return upToA + clamped;
+    }
+
+    // Gauss-Legendre points and weights on [-1, 1]
+    const Foam::FixedList<scalar, 8> gaussPoints
+    ({
+        -0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+        -0.1834346424956498, 0.1834346424956498, 0.5255324099163290,
+        0.7966664774136267, 0.9602898564975363
+    });
+    const Foam::FixedList<scalar, 8> gaussWeights
+    ({
+        0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
+        0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
+        0.2223810344533745, 0.1012285362903763
+    });
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+Foam::scalar Foam::cutCellFraction::circleRectangleArea
+(
+    const scalar rho,
+    const scalar y0,
+    const scalar y1,
+    const scalar z0,
+    const scalar z1
+)
+{
+    if (rho <= 0 || y1 <= y0 || z1 <= z0)
+    {
+        return 0;
+    }
+    return
+        quadrantArea(rho, y1, z1) - quadrantArea(rho, y0, z1)
+      - quadrantArea(rho, y1, z0) + quadrantArea(rho, y0, z0);
+}
+
+
+Foam::scalar Foam::cutCellFraction::sphereBoxVolume
+(
+    const scalar R,
+    const vector& lo,
+    const vector& hi
+)
+{
+    const scalar x0 = max(lo.x(), -R);
+    const scalar x1 = min(hi.x(), R);
+    if (x1 <= x0)
+    {
+        return 0;
+    }
+
+    // Slices x where the slice circle meets an edge or a corner of the
+    // rectangle: the area is smooth between them
+    DynamicList<scalar> breaks(16);
+    breaks.append(x0);
+    const FixedList<scalar, 2> ys({lo.y(), hi.y()});
+    const FixedList<scalar, 2> zs({lo.z(), hi.z()});
+    DynamicList<scalar> reaches(8);
+    for (const scalar y : ys)
+    {
+        reaches.append(mag(y));
+        for (const scalar z : zs)
+        {
+            reaches.append(sqrt(y*y + z*z));
+        }
+    }
+    for (const scalar z : zs)
+    {
+        reaches.append(mag(z));
+    }
+    for (const scalar c : reaches)
+    {
+        if (c < R)
+        {
+            const scalar x = sqrt(R*R - c*c);
+            for (const scalar xb : {-x, x})
+            {
+                if (xb > x0 && xb < x1)
+                {
+                    breaks.append(xb);
+                }
+            }
+        }
+    }
+    breaks.append(x1);
+    Foam::sort(breaks);
+
+    scalar volume = 0;
+    for (label i = 0; i + 1 < breaks.size(); ++i)
+    {
+        const scalar mid = 0.5*(breaks[i] + breaks[i + 1]);
+        const scalar half = 0.5*(breaks[i + 1] - breaks[i]);
+        if (half <= 0)
+        {
+            continue;
+        }
+        for (label k = 0; k < gaussPoints.size(); ++k)
+        {
+            const scalar x = mid + half*gaussPoints[k];
+            const scalar rho = sqrt(max(R*R - x*x, scalar(0)));
+            volume +=
+                half*gaussWeights[k]
+               *circleRectangleArea(rho, lo.y(), hi.y(), lo.z(), hi.z());
+        }
+    }
+    return volume;
+}
+
 
 Foam::scalar Foam::cutCellFraction::unitCube
 (

@@ -9,6 +9,7 @@
 #include "treeDataCell.H"
 #include "indexedOctree.H"
 #include "IFstream.H"
+#include "Random.H"
 #include "HashSet.H"
 #include "OSspecific.H"
 #include "emptyPolyPatch.H"
@@ -141,7 +142,7 @@ void Foam::dlmParticleCloud::checkParticles()
                 << " shape such as sphere." << exit(FatalError);
         }
 
-        label celli = mesh_.findCell(p.position());
+        label celli = cellTree_.findInside(p.position());
         reduce(celli, maxOp<label>());
         if (celli < 0)
         {
@@ -174,6 +175,17 @@ void Foam::dlmParticleCloud::checkParticles()
 }
 
 
+Foam::treeBoundBox Foam::dlmParticleCloud::searchDomain(const fvMesh& mesh)
+{
+    treeBoundBox bb(mesh.points());
+    Random rndGen(261782);
+    bb = bb.extend(rndGen, 1e-4);
+    bb.min() -= point::uniform(ROOTVSMALL);
+    bb.max() += point::uniform(ROOTVSMALL);
+    return bb;
+}
+
+
 void Foam::dlmParticleCloud::updateFractions(const label i)
 {
     const dlmParticle& p = particles_[i];
@@ -192,7 +204,7 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
 
     const labelList candidates
     (
-        mesh_.cellTree().findBox(treeBoundBox(lo, hi))
+        cellTree_.findBox(treeBoundBox(lo, hi))
     );
 
     const tensor R(p.R());
@@ -398,6 +410,14 @@ Foam::dlmParticleCloud::dlmParticleCloud
     ),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
+    cellTree_
+    (
+        treeDataCell(true, mesh, polyMesh::CELL_TETS),
+        searchDomain(mesh),
+        8,
+        10,
+        5.0
+    ),
     boundaryCell_(mesh.nCells(), false),
     touchingBoundary_(false),
     splitDirections_(Zero),

@@ -319,7 +319,7 @@ void Foam::fv::rigidProjection::findRegion(const label i)
     }
     const labelList candidates
     (
-        mesh_.cellTree().findBox(treeBoundBox(lo, hi))
+        cloud.cellTree().findBox(treeBoundBox(lo, hi))
     );
 
     // Neighbours of a cell across its faces: direction, sample, inside

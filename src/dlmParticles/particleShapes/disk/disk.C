@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "disk.H"
+#include "cutCellFraction.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -85,6 +86,30 @@ Foam::scalar Foam::particleShapes::disk::signedDistance
     const scalar magR = mag(rPlane);
     normal = magR > VSMALL ? rPlane/magR : vector(1, 0, 0);
     return magR - radius_;
+}
+
+
+Foam::scalar Foam::particleShapes::disk::boxFraction
+(
+    const boundBox& bb,
+    const point& X,
+    const tensor& R,
+    const vector& splitDirections,
+    const scalar leafSize
+) const
+{
+    const vector lo(bb.min() - X);
+    const vector hi(bb.max() - X);
+    const scalar area = (hi.x() - lo.x())*(hi.y() - lo.y());
+    return
+        cutCellFraction::circleRectangleArea
+        (
+            radius_,
+            lo.x(),
+            hi.x(),
+            lo.y(),
+            hi.y()
+        )/area;
 }
 
 

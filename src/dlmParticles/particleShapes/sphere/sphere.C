@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "sphere.H"
+#include "cutCellFraction.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -82,6 +83,31 @@ Foam::scalar Foam::particleShapes::sphere::signedDistance
     const scalar magR = mag(r);
     normal = magR > VSMALL ? r/magR : vector(1, 0, 0);
     return magR - radius_;
+}
+
+
+Foam::scalar Foam::particleShapes::sphere::boxFraction
+(
+    const boundBox& bb,
+    const point& X,
+    const tensor& R,
+    const vector& splitDirections,
+    const scalar leafSize
+) const
+{
+    const vector lo(bb.min() - X);
+    const vector hi(bb.max() - X);
+    const vector nearest(max(lo, min(vector::zero, hi)));
+    if (magSqr(nearest) >= sqr(radius_))
+    {
+        return 0;
+    }
+    const vector farthest(max(cmptMag(lo), cmptMag(hi)));
+    if (magSqr(farthest) <= sqr(radius_))
+    {
+        return 1;
+    }
+    return cutCellFraction::sphereBoxVolume(radius_, lo, hi)/bb.volume();
 }
 
 
