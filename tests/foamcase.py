@@ -2,6 +2,7 @@
 
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 
@@ -72,13 +73,19 @@ class Case:
         return {name: np.array(values) for name, values in rows.items()}
 
     def internal_field(self, relative_path):
-        """Values of a scalar field written in ascii (uniform or nonuniform)."""
+        """Values of a scalar or vector field written in ascii (uniform or
+        nonuniform): shape (n,) or (n, 3)."""
         text = (self.path / relative_path).read_text()
         rest = text[text.index("internalField"):]
-        if rest.split()[1].startswith("uniform"):
-            return np.array([float(rest.split()[2].rstrip(";"))])
-        body = rest[rest.index("(") + 1:]
-        return np.array([float(v) for v in body[:body.index(")")].split()])
+        rest = rest[:rest.index(";")]
+        if rest.split()[1] == "uniform":
+            values = np.array([float(v) for v in rest.split(None, 2)[2].strip("() ").split()])
+            return values if values.size == 1 else values.reshape(1, -1)
+        body = rest[rest.index("(") + 1:rest.rindex(")")]
+        if "(" in body:
+            return np.array([[float(v) for v in t.split()]
+                             for t in re.findall(r"\(([^()]*)\)", body)])
+        return np.array([float(v) for v in body.split()])
 
     def times(self):
         """Written time directories, sorted."""
