@@ -81,9 +81,16 @@ def main():
     args = parser.parse_args()
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
+    # Runs of other treatments and resolutions stay in the table
+    table = RESULTS / "diskStokes.csv"
     rows = []
+    if table.exists():
+        for line in table.read_text().splitlines()[1:]:
+            v = line.split(",")
+            rows.append([v[0], int(v[1])] + [float(x) for x in v[2:]])
     for mixed_cells in args.mixed_cells.split(","):
         for n in args.resolutions:
+            rows = [r for r in rows if (r[0], r[1]) != (mixed_cells, n)]
             velocity, seconds, oscillation, steps = run(n, mixed_cells, env)
             error = velocity/U_T - 1
             rows.append([mixed_cells, n, velocity, U_T, error, seconds, steps,
@@ -91,7 +98,8 @@ def main():
             print(f"{mixed_cells:15s} N={n:3d} U={velocity:.6e} U_t={U_T:.6e} "
                   f"error={100*error:+.3f}% wall={seconds:.1f}s steps={steps} "
                   f"oscillation={100*oscillation:.3f}%", flush=True)
-            write_table(RESULTS / "diskStokes.csv",
+            rows.sort(key=lambda r: (MIXED_CELLS.index(r[0]), r[1]))
+            write_table(table,
                         ["mixedCells", "cellsPerDiameter", "U", "U_t", "relError",
                          "wallTime_s", "steps", "oscillation"], rows)
 
