@@ -1,8 +1,12 @@
 #!/usr/bin/env python3
 """Cost of the particle work: time per step of pimpleDLMFoam against stock
 pimpleFoam on the same mesh (48^3 cells) and PIMPLE settings, with 0, 10 and
-100 free spheres of 6 cells per diameter. A benchmark, not a test: it prints
-the ratios and writes results/benchmark_overhead.csv.
+100 free spheres of 6 cells per diameter. Reports the ratio of the times per
+step, and the share of the particle work (fractions, projection, motion,
+output) that pimpleDLMFoam measures itself, so the pressure solver's extra
+work in a flow disturbed by particles is not counted as particle work.
+Times are CPU times. A benchmark, not a test: it prints the ratios and
+writes results/benchmark_overhead.csv.
 
     validation/benchmark_overhead.py [steps]        (default 20)
 """
@@ -93,6 +97,12 @@ def time_per_step(log):
     return (times[-1] - times[2])/(len(times) - 3)
 
 
+def particle_share(log):
+    """Share of the execution time pimpleDLMFoam spent on the particles."""
+    return float(re.search(r"^Particle work .*, ([0-9.eE+-]+) % of the execution time",
+                           log, re.M).group(1))/100
+
+
 def main():
     steps = int(sys.argv[1]) if len(sys.argv) > 1 else 20
     env = foam_environment()
@@ -103,14 +113,15 @@ def main():
     rows = [["pimpleFoam", 0, reference, 1.0, 0.0]]
     for n in (0, 10, 100):
         case = make_case(f"bench_dlm_{n}", "pimpleDLMFoam", n, steps, env)
-        t = time_per_step(case.run("pimpleDLMFoam").log)
-        share = 1 - reference/t
+        log = case.run("pimpleDLMFoam").log
+        t = time_per_step(log)
+        share = particle_share(log)
         rows.append(["pimpleDLMFoam", n, t, t/reference, share])
         print(f"pimpleDLMFoam, {n:3d} particles: {t:.4f} s/step, "
-              f"ratio {t/reference:.3f}, particle work {100*share:.1f} % of a step")
+              f"ratio {t/reference:.3f}, particle work {100*share:.1f} % of the run")
     write_table(RESULTS / "benchmark_overhead.csv",
                 ["solver", "particles", "secondsPerStep", "ratioToPimpleFoam",
-                 "particleShareOfStep"], rows)
+                 "particleWorkShare"], rows)
 
 
 if __name__ == "__main__":

@@ -40,6 +40,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "dlmParticleCloud.H"
+#include "cpuTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -95,22 +96,34 @@ int main(int argc, char *argv[])
 
         particles.move();
 
-        if (particles.touchingBoundary())
+        const bool touching = particles.touchingBoundary();
+        if (touching)
         {
             Info<< nl << "A free particle reached the cells next to a wall:"
                 << " stopping, as particle-wall contact is not modelled."
                 << nl << endl;
-            particles.writeStep(true);
+        }
+
+        const cpuTime outputTimer;
+        particles.writeStep(touching);
+        particles.addWorkTime(outputTimer.elapsedCpuTime());
+
+        if (touching)
+        {
             runTime.writeAndEnd();
         }
         else
         {
-            particles.writeStep();
             runTime.write();
         }
 
         runTime.printExecutionTime(Info);
     }
+
+    Info<< "Particle work (fractions, projection, motion, output): "
+        << particles.workTime() << " s, "
+        << 100*particles.workTime()/max(runTime.elapsedCpuTime(), SMALL)
+        << " % of the execution time" << nl << endl;
 
     Info<< "End\n" << endl;
 

@@ -89,7 +89,7 @@ void runConservation()
     // The case's particle has density 3: ratios 3 and 0.5
     for (const scalar rhoFluid : {1.0, 6.0})
     {
-        for (const word mixedCells : mixedCellsTypes)
+        for (const word& mixedCells : mixedCellsTypes)
         {
             dlmParticleCloud cloud(mesh, dimensionedScalar("rho", dimDensity, rhoFluid));
             tmp<volVectorField> tU(zeroVelocity(mesh));
@@ -182,7 +182,7 @@ void runRigidUnchanged()
     const vector U0 = twoD(mesh) ? vector(0.3, -0.2, 0) : vector(0.3, -0.2, 0.1);
     const vector omega0 = twoD(mesh) ? vector(0, 0, 2) : vector(1, -2, 0.5);
 
-    for (const word mixedCells : mixedCellsTypes)
+    for (const word& mixedCells : mixedCellsTypes)
     {
         tmp<volVectorField> tU(zeroVelocity(mesh));
         volVectorField& U = tU.ref();

@@ -24,47 +24,52 @@ namespace
            *(t*Foam::sqrt(1 - t*t) + Foam::asin(t) + 0.5*Foam::constant::mathematical::pi);
     }
 
-    // Area of the circle of radius rho about the origin with y < a, z < b
-    scalar quadrantArea(const scalar rho, const scalar a, const scalar b)
+    // Integral over y in [y0, y1] of clamp(b, -s, s), s = sqrt(rho^2 - y^2)
+    // the half chord, given S0 = S(y0) and S1 = S(y1) of halfChordIntegral
+    // (y0, y1 within [-rho, rho]): the part of the chords below z = b, less
+    // the half chords
+    scalar chordsBelow
+    (
+        const scalar rho,
+        const scalar y0,
+        const scalar y1,
+        const scalar S0,
+        const scalar S1,
+        const scalar b
+    )
     {
-        if (a <= -rho || b <= -rho)
-        {
-            return 0;
-        }
-        // Each slice y has the chord [-s, s], s = sqrt(rho^2 - y^2), of
-        // which z < b keeps s + clamp(b, -s, s)
-        const scalar upToA = halfChordIntegral(rho, a);
         if (b >= rho)
         {
-            return 2*upToA;
+            return S1 - S0;
+        }
+        if (b <= -rho)
+        {
+            return S0 - S1;
         }
 
+        // |y| < yb: the chord's part below b ends at b; elsewhere at +-s
         const scalar yb = Foam::sqrt(rho*rho - b*b);
-        const scalar sign = b >= 0 ? 1 : -1;
-        scalar clamped = sign*halfChordIntegral(rho, Foam::min(a, -yb));
-        if (a > -yb)
+        const scalar lo = Foam::max(y0, -yb);
+        const scalar hi = Foam::min(y1, yb);
+        if (hi <= lo)
         {
-            clamped += b*(Foam::min(a, yb) + yb);
+            return (b > 0 ? 1 : -1)*(S1 - S0);
         }
-        if (a > yb)
-        {
-            clamped += sign*(upToA - halfChordIntegral(rho, yb));
-        }
-        return upToA + clamped;
+        const scalar inner =
+            halfChordIntegral(rho, hi) - halfChordIntegral(rho, lo);
+        return (b > 0 ? 1 : -1)*(S1 - S0 - inner) + b*(hi - lo);
     }
 
     // Gauss-Legendre points and weights on [-1, 1]
-    const Foam::FixedList<scalar, 8> gaussPoints
+    const Foam::FixedList<scalar, 4> gaussPoints
     ({
-        -0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-        -0.1834346424956498, 0.1834346424956498, 0.5255324099163290,
-        0.7966664774136267, 0.9602898564975363
+        -0.8611363115940526, -0.3399810435848563,
+        0.3399810435848563, 0.8611363115940526
     });
-    const Foam::FixedList<scalar, 8> gaussWeights
+    const Foam::FixedList<scalar, 4> gaussWeights
     ({
-        0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-        0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-        0.2223810344533745, 0.1012285362903763
+        0.3478548451374538, 0.6521451548625461,
+        0.6521451548625461, 0.3478548451374538
     });
 }
 
@@ -80,13 +85,19 @@ Foam::scalar Foam::cutCellFraction::circleRectangleArea
     const scalar z1
 )
 {
-    if (rho <= 0 || y1 <= y0 || z1 <= z0)
+    const scalar ya = max(y0, -rho);
+    const scalar yb = min(y1, rho);
+    if (rho <= 0 || yb <= ya || z1 <= z0)
     {
         return 0;
     }
+
+    // Each chord y in [ya, yb] keeps its part between z0 and z1
+    const scalar S0 = halfChordIntegral(rho, ya);
+    const scalar S1 = halfChordIntegral(rho, yb);
     return
-        quadrantArea(rho, y1, z1) - quadrantArea(rho, y0, z1)
-      - quadrantArea(rho, y1, z0) + quadrantArea(rho, y0, z0);
+        chordsBelow(rho, ya, yb, S0, S1, z1)
+      - chordsBelow(rho, ya, yb, S0, S1, z0);
 }
 
 

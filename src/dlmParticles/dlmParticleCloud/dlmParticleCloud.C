@@ -6,9 +6,11 @@
 
 #include "dlmParticleCloud.H"
 #include "zeroGradientFvPatchFields.H"
+#include "surfaceFields.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
 #include "IFstream.H"
+#include "cpuTime.H"
 #include "Random.H"
 #include "HashSet.H"
 #include "OSspecific.H"
@@ -193,8 +195,9 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
     const point& X = p.position();
     const scalar Rb = shape.boundingRadius();
 
-    point lo(X - Rb*vector::one);
-    point hi(X + Rb*vector::one);
+    const scalar reach = Rb + 1.01*cellSizeMax_;
+    point lo(X - reach*vector::one);
+    point hi(X + reach*vector::one);
     if (twoD())
     {
         const boundBox& bounds = mesh_.bounds();
@@ -202,10 +205,7 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
         hi.z() = bounds.max().z();
     }
 
-    const labelList candidates
-    (
-        cellTree_.findBox(treeBoundBox(lo, hi))
-    );
+    nearCells_[i] = cellTree_.findBox(treeBoundBox(lo, hi));
 
     const tensor R(p.R());
     const scalar leafSize = Rb/surfaceResolution_;
@@ -215,7 +215,7 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
     cells.clear();
     fractions.clear();
 
-    for (const label celli : candidates)
+    for (const label celli : nearCells_[i])
     {
         const scalar f = shape.boxFraction
         (
@@ -408,6 +408,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     (
         properties_.getOrDefault<scalar>("surfaceResolution", 32)
     ),
+    cellSizeMax_(gMax(mag(mesh.delta()().primitiveField()))),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
     cellTree_
@@ -450,6 +451,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
         zeroGradientFvPatchScalarField::typeName
     ),
     projected_(false),
+    workTime_(0),
     startTimeName_(mesh.time().timeName())
 {
     const wordHashSet known
@@ -521,6 +523,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
 
     cells_.setSize(particles_.size());
     fractions_.setSize(particles_.size());
+    nearCells_.setSize(particles_.size());
     forAll(particles_, i)
     {
         updateFractions(i);
@@ -535,6 +538,8 @@ Foam::dlmParticleCloud::dlmParticleCloud
 
 void Foam::dlmParticleCloud::move()
 {
+    const cpuTime timer;
+
     if (!projected_)
     {
         for (const dlmParticle& p : particles_)
@@ -565,6 +570,8 @@ void Foam::dlmParticleCloud::move()
     reduce(touchingBoundary_, orOp<bool>());
 
     updateFields();
+
+    workTime_ += timer.elapsedCpuTime();
 }
 
 

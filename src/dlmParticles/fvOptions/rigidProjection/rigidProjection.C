@@ -12,6 +12,7 @@
 #include "indexedOctree.H"
 #include "treeDataCell.H"
 #include "scalarMatrices.H"
+#include "cpuTime.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -49,23 +50,30 @@ namespace
         nSums = 17
     };
 
-    // Layout of the per-particle sums of the interpolated projection:
-    // the momentum balance a11 U - [q]x Omega = b1,
-    // [ar]x U + A22 Omega = b2, and the particle's own mass and inertia
-    enum interpolatedSumIndex
+    // Layout of the per-particle sums of the interpolated projection: the
+    // momentum balance a11 U - [q]x Omega = b1, [ar]x U + A22 Omega = b2,
+    // and the particle's own mass and inertia. Geometric sums, fixed over a
+    // time step:
+    enum geometricSumIndex
     {
-        jA11 = 0,           // sum m a
-        jMq = 1,            // sum m q (3)
-        jMar = 4,           // sum m a r (3)
-        jA22 = 7,           // sum m ((r.q) 1 - q r) (9)
-        jB1 = 16,           // sum m (u - u_samples) (3)
-        jB2 = 19,           // sum m r x (u - u_samples) (3)
-        jForce = 22,        // sum V f (3)
-        jTorque = 25,       // sum V r x f (3)
-        jMass = 28,         // sum rho_s phi V
-        jVolume = 29,       // sum phi V
-        jInertia = 30,      // sum rho_s phi V (|r|^2 1 - r r) (6)
-        nInterpolatedSums = 36
+        gA11 = 0,           // sum m a
+        gMq = 1,            // sum m q (3)
+        gMar = 4,           // sum m a r (3)
+        gA22 = 7,           // sum m ((r.q) 1 - q r) (9)
+        gMass = 16,         // sum rho_s phi V
+        gVolume = 17,       // sum phi V
+        gInertia = 18,      // sum rho_s phi V (|r|^2 1 - r r) (6)
+        nGeometricSums = 24
+    };
+
+    // and sums of the velocity and the held force, at each correction
+    enum velocitySumIndex
+    {
+        vB1 = 0,            // sum m (u - u_samples) (3)
+        vB2 = 3,            // sum m r x (u - u_samples) (3)
+        vForce = 6,         // sum V f (3)
+        vTorque = 9,        // sum V r x f (3)
+        nVelocitySums = 12
     };
 
     // Layout of the sums that remove the net force of the carried force
@@ -178,55 +186,6 @@ namespace
             }
         }
     }
-
-    // Distance t along the unit direction e from x0 (outside the shape) to
-    // the surface, given that x0 + L e is inside: regula falsi (Illinois)
-    Foam::scalar surfaceCrossing
-    (
-        const Foam::particleShape& shape,
-        const Foam::point& X,
-        const Foam::tensor& Rt,
-        const Foam::point& x0,
-        const Foam::vector& e,
-        const Foam::scalar L
-    )
-    {
-        using namespace Foam;
-
-        vector normal;
-        scalar ta = 0;
-        scalar tb = L;
-        scalar da = shape.signedDistance(Rt & (x0 - X), normal);
-        scalar db = shape.signedDistance(Rt & (x0 + L*e - X), normal);
-        if (da <= 0)
-        {
-            return 0;
-        }
-
-        scalar t = ta;
-        for (label iter = 0; iter < 60; ++iter)
-        {
-            t = (ta*db - tb*da)/(db - da);
-            const scalar d = shape.signedDistance(Rt & (x0 + t*e - X), normal);
-            if (mag(d) < 1e-12*L)
-            {
-                break;
-            }
-            if (d > 0)
-            {
-                ta = t;
-                da = d;
-                db *= 0.5;
-            }
-            else
-            {
-                tb = t;
-                db = d;
-                da *= 0.5;
-            }
-        }
-        return t;
-    }
 }
 
 
@@ -276,6 +235,7 @@ void Foam::fv::rigidProjection::updateRegions()
 
     restrictForce();
     heldForce_ = force_.primitiveField();
+    sumRegionGeometry();
     regionTimeIndex_ = timeIndex;
 }
 
@@ -309,18 +269,18 @@ void Foam::fv::rigidProjection::findRegion(const label i)
     sampleFaces.clear();
     sampleCoeffs.clear();
 
-    const scalar reach = shape.boundingRadius() + 2*cellSizeMax_;
-    point lo(X - reach*vector::one);
-    point hi(X + reach*vector::one);
-    if (cloud.twoD())
+    // An interface cell's centre lies within a neighbour distance of the
+    // surface: it is among the particle's near cells
+    const labelList& candidates = cloud.nearCells(i);
+    const scalar cellSizeMax = cloud.cellSizeMax();
+
+    // Which candidates have their centre inside
+    for (const label celli : candidates)
     {
-        lo.z() = mesh_.bounds().min().z();
-        hi.z() = mesh_.bounds().max().z();
+        vector normal;
+        inside_[celli] =
+            shape.signedDistance(Rt & (C[celli] - X), normal) < 0;
     }
-    const labelList candidates
-    (
-        cloud.cellTree().findBox(treeBoundBox(lo, hi))
-    );
 
     // Neighbours of a cell across its faces: direction, sample, inside
     struct neighbourSample
@@ -335,14 +295,18 @@ void Foam::fv::rigidProjection::findRegion(const label i)
     vector normal;
     for (const label celli : candidates)
     {
-        const scalar d0 = shape.signedDistance(Rt & (C[celli] - X), normal);
-
-        if (d0 < 0)
+        if (inside_[celli])
         {
             cells.append(celli);
             weights.append(1);
             arms.append(C[celli] - X);
             starts.append(sampleCells.size());
+            continue;
+        }
+
+        const scalar d0 = shape.signedDistance(Rt & (C[celli] - X), normal);
+        if (d0 >= cellSizeMax)
+        {
             continue;
         }
 
@@ -372,7 +336,11 @@ void Foam::fv::rigidProjection::findRegion(const label i)
                   ? coupledDeltas_[patchi][localFacei]
                   : fp.Cf()[localFacei] - C[celli];
             }
-            if (nbr.celli >= 0 || mesh_.boundary()[nbr.face.first()].coupled())
+            if (nbr.celli >= 0)
+            {
+                nbr.inside = inside_[nbr.celli];
+            }
+            else if (mesh_.boundary()[nbr.face.first()].coupled())
             {
                 nbr.inside =
                     shape.signedDistance
@@ -425,7 +393,8 @@ void Foam::fv::rigidProjection::findRegion(const label i)
                 continue;
             }
 
-            const scalar t = surfaceCrossing(shape, X, Rt, C[celli], e, L);
+            const scalar t =
+                shape.surfaceCrossing(Rt & (C[celli] - X), Rt & e, L);
             const scalar Lout = -(e & out->delta);
             const scalar aLine = Lout/(t + Lout);
             const scalar w = sqr(e & n) + SMALL;
@@ -457,6 +426,63 @@ void Foam::fv::rigidProjection::findRegion(const label i)
         }
     }
     starts.append(sampleCells.size());
+
+    for (const label celli : candidates)
+    {
+        inside_[celli] = false;
+    }
+}
+
+
+void Foam::fv::rigidProjection::sumRegionGeometry()
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const PtrList<dlmParticle>& particles = cloud.particles();
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const scalarField& rho = cloud.rho();
+
+    geometricSums_.setSize(nGeometricSums*particles.size());
+    geometricSums_ = Zero;
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        const point& X = p.position();
+        scalar* s = &geometricSums_[nGeometricSums*i];
+
+        const DynamicList<label>& cells = regionCells_[i];
+        forAll(cells, k)
+        {
+            const label celli = cells[k];
+            const scalar m = rho[celli]*V[celli];
+            const scalar a = regionWeights_[i][k];
+            const vector& q = regionArms_[i][k];
+            const vector r(C[celli] - X);
+            s[gA11] += m*a;
+            addVector(s + gMq, m*q);
+            addVector(s + gMar, m*a*r);
+            addTensor(s + gA22, m*((r & q)*tensor::I - q*r));
+        }
+
+        const DynamicList<label>& covered = cloud.cells(i);
+        const DynamicList<scalar>& fractions = cloud.fractions(i);
+        forAll(covered, k)
+        {
+            const label celli = covered[k];
+            const scalar m = p.density()*fractions[k]*V[celli];
+            const vector r(C[celli] - X);
+            s[gMass] += m;
+            s[gVolume] += fractions[k]*V[celli];
+            const symmTensor J(m*(magSqr(r)*symmTensor::I - sqr(r)));
+            for (direction d = 0; d < 6; ++d)
+            {
+                s[gInertia + d] += J[d];
+            }
+        }
+    }
+    Pstream::listCombineGather(geometricSums_, plusEqOp<scalar>());
+    Pstream::listCombineScatter(geometricSums_);
 }
 
 
@@ -563,7 +589,7 @@ Foam::fv::rigidProjection::rigidProjection
         dimensionedVector(dimDensity*dimAcceleration, Zero)
     ),
     heldForce_(force_.primitiveField()),
-    cellSizeMax_(gMax(mag(mesh.delta()().primitiveField()))),
+    inside_(mesh.nCells(), false),
     coupledDeltas_(mesh.boundary().size()),
     regionTimeIndex_(-1)
 {
@@ -617,8 +643,9 @@ void Foam::fv::rigidProjection::addSup
     const label fieldi
 )
 {
-    const dlmParticleCloud& cloud =
-        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const cpuTime timer;
+    dlmParticleCloud& cloud =
+        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
     const vector g(gravity());
     const scalar rhoFluid = cloud.rhoFluid().value();
 
@@ -647,11 +674,13 @@ void Foam::fv::rigidProjection::addSup
     }
 
     eqn += source;
+    cloud.addWorkTime(timer.elapsedCpuTime());
 }
 
 
 void Foam::fv::rigidProjection::correct(volVectorField& U)
 {
+    const cpuTime timer;
     if (mixedCells_ == mixedCellsType::interpolated)
     {
         updateRegions();
@@ -663,7 +692,10 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
     }
 
     U.correctBoundaryConditions();
-    mesh_.lookupObjectRef<dlmParticleCloud>("particles").setProjected();
+    dlmParticleCloud& cloud =
+        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
+    cloud.setProjected();
+    cloud.addWorkTime(timer.elapsedCpuTime());
 }
 
 
@@ -679,7 +711,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
     vectorField& u = U.primitiveFieldRef();
     vectorField& f = force_.primitiveFieldRef();
 
-    const vector g(gravity());
+    const vector gravity(this->gravity());
     const scalar rhoFluid = cloud.rhoFluid().value();
     const scalar deltaT = mesh_.time().deltaTValue();
     const bool twoD = cloud.twoD();
@@ -726,47 +758,29 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         return sum;
     };
 
-    scalarList sums(nInterpolatedSums*particles.size(), Zero);
+    // Velocity of the samples of each forced cell
+    List<vectorField> sampled(particles.size());
+    scalarList sums(nVelocitySums*particles.size(), Zero);
     forAll(particles, i)
     {
-        const dlmParticle& p = particles[i];
-        const point& X = p.position();
-        scalar* s = &sums[nInterpolatedSums*i];
+        const point& X = particles[i].position();
+        scalar* s = &sums[nVelocitySums*i];
 
         const DynamicList<label>& cells = regionCells_[i];
+        sampled[i].setSize(cells.size());
         forAll(cells, k)
         {
             const label celli = cells[k];
             const scalar m = rho[celli]*V[celli];
-            const scalar a = regionWeights_[i][k];
-            const vector& q = regionArms_[i][k];
             const vector r(C[celli] - X);
-            const vector d(u[celli] - sampledVelocity(i, k));
+            sampled[i][k] = sampledVelocity(i, k);
+            const vector d(u[celli] - sampled[i][k]);
+            const vector& f = heldForce_[celli];
 
-            s[jA11] += m*a;
-            addVector(s + jMq, m*q);
-            addVector(s + jMar, m*a*r);
-            addTensor(s + jA22, m*((r & q)*tensor::I - q*r));
-            addVector(s + jB1, m*d);
-            addVector(s + jB2, m*(r ^ d));
-            addVector(s + jForce, V[celli]*heldForce_[celli]);
-            addVector(s + jTorque, V[celli]*(r ^ heldForce_[celli]));
-        }
-
-        const DynamicList<label>& covered = cloud.cells(i);
-        const DynamicList<scalar>& fractions = cloud.fractions(i);
-        forAll(covered, k)
-        {
-            const label celli = covered[k];
-            const scalar m = p.density()*fractions[k]*V[celli];
-            const vector r(C[celli] - X);
-            s[jMass] += m;
-            s[jVolume] += fractions[k]*V[celli];
-            const symmTensor J(m*(magSqr(r)*symmTensor::I - sqr(r)));
-            for (direction d = 0; d < 6; ++d)
-            {
-                s[jInertia + d] += J[d];
-            }
+            addVector(s + vB1, m*d);
+            addVector(s + vB2, m*(r ^ d));
+            addVector(s + vForce, V[celli]*f);
+            addVector(s + vTorque, V[celli]*(r ^ f));
         }
     }
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
@@ -778,21 +792,22 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
     forAll(particles, i)
     {
         dlmParticle& p = particles[i];
-        const scalar* s = &sums[nInterpolatedSums*i];
+        const scalar* g = &geometricSums_[nGeometricSums*i];
+        const scalar* s = &sums[nVelocitySums*i];
 
-        if (s[jA11] <= 0)
+        if (g[gA11] <= 0)
         {
             FatalErrorInFunction
                 << "Particle " << p.name() << " covers no cell centre"
                 << exit(FatalError);
         }
 
-        const tensor A11(s[jA11]*tensor::I);
-        const tensor A12(-crossMatrix(sumVector(s + jMq)));
-        const tensor A21(crossMatrix(sumVector(s + jMar)));
-        const tensor A22(sumTensor(s + jA22));
-        const vector b1(sumVector(s + jB1));
-        const vector b2(sumVector(s + jB2));
+        const tensor A11(g[gA11]*tensor::I);
+        const tensor A12(-crossMatrix(sumVector(g + gMq)));
+        const tensor A21(crossMatrix(sumVector(g + gMar)));
+        const tensor A22(sumTensor(g + gA22));
+        const vector b1(sumVector(s + vB1));
+        const vector b2(sumVector(s + vB2));
 
         if (p.isFree())
         {
@@ -803,17 +818,17 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
 
         const vector& Up = p.velocity();
         const vector& omega = p.angularVelocity();
-        const scalar M = s[jMass];
+        const scalar M = g[gMass];
         symmTensor I;
         for (direction d = 0; d < 6; ++d)
         {
-            I[d] = s[jInertia + d];
+            I[d] = g[gInertia + d];
         }
 
         vector F, T;
         if (p.isFree())
         {
-            F = M*(Up - p.velocity0())/deltaT - p.density()*s[jVolume]*g;
+            F = M*(Up - p.velocity0())/deltaT - p.density()*g[gVolume]*gravity;
             T = (I & (omega - p.angularVelocity0()))/deltaT;
         }
         else
@@ -822,18 +837,18 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
             // correction's change, (A x - b)/dt
             const vector holdForce
             (
-                sumVector(s + jForce)
+                sumVector(s + vForce)
               + forceRelaxation_*((A11 & Up) + (A12 & omega) - b1)/deltaT
             );
             const vector holdTorque
             (
-                sumVector(s + jTorque)
+                sumVector(s + vTorque)
               + forceRelaxation_*((A21 & Up) + (A22 & omega) - b2)/deltaT
             );
             F =
-                s[jA11]*(Up - p.velocity0())/deltaT
+                g[gA11]*(Up - p.velocity0())/deltaT
               - holdForce
-              - rhoFluid*s[jVolume]*g;
+              - rhoFluid*g[gVolume]*gravity;
             T = (I & (omega - p.angularVelocity0()))/deltaT - holdTorque;
         }
         if (twoD)
@@ -851,7 +866,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
             target[k] =
                 regionWeights_[i][k]*Up
               + (omega ^ regionArms_[i][k])
-              + sampledVelocity(i, k);
+              + sampled[i][k];
         }
     }
 

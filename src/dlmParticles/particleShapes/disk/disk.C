@@ -89,6 +89,28 @@ Foam::scalar Foam::particleShapes::disk::signedDistance
 }
 
 
+Foam::scalar Foam::particleShapes::disk::surfaceCrossing
+(
+    const vector& r0,
+    const vector& e,
+    const scalar L
+) const
+{
+    // In the plane of the disk: |r0 + t e|^2 = R^2, entering root
+    const vector rPlane(r0.x(), r0.y(), 0);
+    const vector ePlane(e.x(), e.y(), 0);
+    const scalar a = magSqr(ePlane);
+    if (a < SMALL)
+    {
+        return 0;
+    }
+    const scalar b = (rPlane & ePlane)/a;
+    const scalar c = (magSqr(rPlane) - sqr(radius_))/a;
+    const scalar disc = max(sqr(b) - c, scalar(0));
+    return min(max(-b - Foam::sqrt(disc), scalar(0)), L);
+}
+
+
 Foam::scalar Foam::particleShapes::disk::boxFraction
 (
     const boundBox& bb,

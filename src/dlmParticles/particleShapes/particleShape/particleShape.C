@@ -98,6 +98,49 @@ Foam::scalar Foam::particleShape::subBoxFraction
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::particleShape::surfaceCrossing
+(
+    const vector& r0,
+    const vector& e,
+    const scalar L
+) const
+{
+    vector normal;
+    scalar ta = 0;
+    scalar tb = L;
+    scalar da = signedDistance(r0, normal);
+    scalar db = signedDistance(r0 + L*e, normal);
+    if (da <= 0)
+    {
+        return 0;
+    }
+
+    scalar t = ta;
+    for (label iter = 0; iter < 60; ++iter)
+    {
+        t = (ta*db - tb*da)/(db - da);
+        const scalar d = signedDistance(r0 + t*e, normal);
+        if (mag(d) < 1e-12*L)
+        {
+            break;
+        }
+        if (d > 0)
+        {
+            ta = t;
+            da = d;
+            db *= 0.5;
+        }
+        else
+        {
+            tb = t;
+            db = d;
+            da *= 0.5;
+        }
+    }
+    return t;
+}
+
+
 Foam::scalar Foam::particleShape::boxFraction
 (
     const boundBox& bb,

@@ -86,6 +86,21 @@ Foam::scalar Foam::particleShapes::sphere::signedDistance
 }
 
 
+Foam::scalar Foam::particleShapes::sphere::surfaceCrossing
+(
+    const vector& r0,
+    const vector& e,
+    const scalar L
+) const
+{
+    // |r0 + t e|^2 = R^2, entering root
+    const scalar b = r0 & e;
+    const scalar c = magSqr(r0) - sqr(radius_);
+    const scalar disc = max(sqr(b) - c, scalar(0));
+    return min(max(-b - Foam::sqrt(disc), scalar(0)), L);
+}
+
+
 Foam::scalar Foam::particleShapes::sphere::boxFraction
 (
     const boundBox& bb,
