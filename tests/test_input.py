@@ -98,3 +98,20 @@ def test_missing_rigid_projection(meshed, tmp_path):
         (case.path / "system" / "fvOptions").unlink()
     log = run_with(meshed, tmp_path, None, edit=edit)
     assert "Particle sphere is free but no rigid projection ran" in log
+
+
+def test_force_relaxation_out_of_range(meshed, tmp_path):
+    def edit(case):
+        case.set("system/fvOptions", "rigidProjection/forceRelaxation", 1.5)
+    log = run_with(meshed, tmp_path, None, edit=edit)
+    assert "forceRelaxation 1.5" in log and "outside [0, 1]" in log
+    assert "fvOptions" in log
+
+
+def test_time_step_above_the_viscous_limit(meshed, tmp_path):
+    # h = 1.67 mm in sphereBox: nu 1e-2 makes nu dt/h^2 = 18 at dt = 5 ms
+    def edit(case):
+        case.set("constant/transportProperties", "nu", 1e-2)
+    log = run_with(meshed, tmp_path, None, edit=edit)
+    assert "viscous number" in log and "maxViscousNumber 4" in log
+    assert "controlDict" in log and "Reduce deltaT to at most" in log

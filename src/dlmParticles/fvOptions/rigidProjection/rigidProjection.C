@@ -625,6 +625,12 @@ bool Foam::fv::rigidProjection::read(const dictionary& dict)
             mixedCellsType::interpolated
         );
         forceRelaxation_ = coeffs_.getOrDefault<scalar>("forceRelaxation", 1);
+        if (forceRelaxation_ < 0 || forceRelaxation_ > 1)
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "forceRelaxation " << forceRelaxation_ << " of fvOption "
+                << name_ << " is outside [0, 1]" << exit(FatalIOError);
+        }
         force_.writeOpt() =
             mixedCells_ == mixedCellsType::interpolated
           ? IOobject::AUTO_WRITE
