@@ -22,7 +22,7 @@ Description
        p_rgh = p - rhoFluid (g & x) is the pressure less the fluid's
        hydrostatic part, so a fluid at rest stays at rest exactly;
     2. rigid-body projection in the particles (the rigidProjection fvOption,
-       applied after each velocity correction), which also gives each free
+       applied after each pressure correction), which also gives each free
        particle the impulse of its weight less its buoyancy;
     3. particle motion and new volume fractions (dlmParticleCloud).
 
