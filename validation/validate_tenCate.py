@@ -37,10 +37,15 @@ def main():
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
     table = RESULTS / "tenCate.csv"
-    rows = []
-    if table.exists():
-        lines = table.read_text().splitlines()[1:]
-        rows = [line.split(",") for line in lines]
+
+    def stored_rows():
+        """Rows of the table as written now: runs of other cases or
+        resolutions (possibly by another instance of this script) stay."""
+        if not table.exists():
+            return []
+        return [line.split(",") for line in table.read_text().splitlines()[1:]]
+
+    rows = stored_rows()
     for case_name in args.cases.split(","):
         histories = {}
         for n in args.resolutions:
@@ -51,7 +56,8 @@ def main():
             histories[f"{n} cells/d"] = h
             u_max, error = tenCate.summary(case_name, h)
             rms = rms_velocity_deviation(case_name, h)
-            rows = [r for r in rows if not (r[0] == case_name and int(r[1]) == n)]
+            rows = [r for r in stored_rows()
+                    if not (r[0] == case_name and int(r[1]) == n)]
             rows.append([case_name, n, u_max, tenCate.CASES[case_name][2], error,
                          rms, seconds, len(h), h[-1, 0]])
             print(f"{case_name} N={n:3d} u_max={u_max:.5f} error={100*error:+.2f}% "
