@@ -177,3 +177,19 @@ def test_disk_at_reynolds_2000_runs_without_blow_up(tmp_path, foam_env):
     U = case.internal_field("1.2/U")
     assert np.isfinite(U).all()
     assert np.linalg.norm(U, axis=1).max() < 0.5
+
+
+def test_fixed_sphere_in_a_periodic_array_holds_the_driving_force(tmp_path, foam_env):
+    """tutorials/periodicArray at 8 cells per diameter: in the steady Stokes
+    flow the fluid force on the fixed sphere balances the mean pressure
+    gradient over the periodic cell, G L^3 (1e-6 N), and the drag coefficient
+    is within 15 % of Zick & Homsy's 4.292 (the convergence is in
+    validation/validate_zickHomsy.py)."""
+    case = Case.copy(HERE.parent / "tutorials" / "periodicArray",
+                     tmp_path / "array", foam_env)
+    result = case.run("./Allrun", 0.125, 8)
+    F = case.history()["sphere"][-1, 10:13]
+    assert F[0] == pytest.approx(1e-6, rel=1e-4)
+    assert np.abs(F[1:]).max() < 1e-6*F[0]
+    K = float(result.log.split("K = F/(6 pi mu a U) = ")[1].split()[0])
+    assert K == pytest.approx(4.292, rel=0.15)
