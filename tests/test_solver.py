@@ -193,3 +193,27 @@ def test_fixed_sphere_in_a_periodic_array_holds_the_driving_force(tmp_path, foam
     assert np.abs(F[1:]).max() < 1e-6*F[0]
     K = float(result.log.split("K = F/(6 pi mu a U) = ")[1].split()[0])
     assert K == pytest.approx(4.292, rel=0.15)
+
+
+def test_parallel_restart_continues_the_trajectory(tmp_path, foam_env):
+    """A decomposed run stopped at a written time and restarted from the
+    processor directories continues as the uninterrupted parallel run."""
+    def make(name, end_time):
+        case = sphere_case(tmp_path, foam_env, name)
+        case.set("system/controlDict", "endTime", end_time)
+        case.run("decomposePar")
+        return case
+
+    full = make("full", 0.1)
+    full.run("pimpleDLMFoam", np=2)
+
+    stopped = make("stopped", 0.05)
+    stopped.run("pimpleDLMFoam", np=2)
+    stopped.set("system/controlDict", "endTime", 0.1)
+    stopped.run("pimpleDLMFoam", np=2, log="pimpleDLMFoam.restart")
+
+    a = full.history()["sphere"]
+    b = stopped.history("0.05")["sphere"]
+    tail = a[a[:, 0] > 0.05 + 1e-9]
+    assert len(b) == len(tail) == 10
+    assert np.abs(b[:, 1:10] - tail[:, 1:10]).max() < 1e-12
