@@ -13,6 +13,7 @@
 #include "treeDataCell.H"
 #include "scalarMatrices.H"
 #include "cpuTime.H"
+#include "syncTools.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -86,6 +87,9 @@ namespace
         kTorque = 16,       // sum V r x f (3)
         nRestrictSums = 19
     };
+
+    // Sample code for the second cell across a coupled face
+    const Foam::label secondLayerSample = -2;
 
     inline Foam::vector sumVector(const Foam::scalar* s)
     {
@@ -396,15 +400,61 @@ void Foam::fv::rigidProjection::findRegion(const label i)
             const scalar t =
                 shape.surfaceCrossing(Rt & (C[celli] - X), Rt & e, L);
             const scalar Lout = -(e & out->delta);
-            const scalar aLine = Lout/(t + Lout);
             const scalar w = sqr(e & n) + SMALL;
+
+            // The next sample out along the line, for a quadratic profile:
+            // a cell or face beyond an inner cell, or the cell beyond a
+            // coupled face (second layer, exchanged at each correction)
+            label out2Cell = -1;
+            labelPair out2Face(-1, -1);
+            vector delta2(Zero);
+            bool quadratic = false;
+            if (out->celli >= 0)
+            {
+                quadratic =
+                    nextAlong(out->celli, -e, out2Cell, out2Face, delta2);
+            }
+            else if (mesh_.boundary()[out->face.first()].coupled())
+            {
+                const label bFacei =
+                    mesh_.boundary()[out->face.first()].start()
+                  + out->face.second() - mesh_.nInternalFaces();
+                if (secondLayerAcross_[bFacei])
+                {
+                    out2Cell = secondLayerSample;
+                    out2Face = out->face;
+                    delta2 = secondLayerDelta_[bFacei];
+                    quadratic = true;
+                }
+            }
+            const scalar Lout2 = -(e & delta2);
+            quadratic = quadratic && Lout2 > 0.5*Lout;
+
+            scalar aLine, cOut, cOut2 = 0;
+            if (quadratic)
+            {
+                aLine = Lout*(Lout + Lout2)/((t + Lout)*(t + Lout + Lout2));
+                cOut = t*(Lout + Lout2)/((t + Lout)*Lout2);
+                cOut2 = -t*Lout/((t + Lout + Lout2)*Lout2);
+            }
+            else
+            {
+                aLine = Lout/(t + Lout);
+                cOut = 1 - aLine;
+            }
 
             weightSum += w;
             a += w*aLine;
             q += w*aLine*(C[celli] + t*e - X);
             sampleCells.append(out->celli);
             sampleFaces.append(out->face);
-            sampleCoeffs.append(w*(1 - aLine));
+            sampleCoeffs.append(w*cOut);
+            if (quadratic)
+            {
+                sampleCells.append(out2Cell);
+                sampleFaces.append(out2Face);
+                sampleCoeffs.append(w*cOut2);
+            }
         }
 
         if (weightSum > 0)
@@ -483,6 +533,59 @@ void Foam::fv::rigidProjection::sumRegionGeometry()
     }
     Pstream::listCombineGather(geometricSums_, plusEqOp<scalar>());
     Pstream::listCombineScatter(geometricSums_);
+}
+
+
+bool Foam::fv::rigidProjection::nextAlong
+(
+    const label celli,
+    const vector& e,
+    label& nbrCell,
+    labelPair& nbrFace,
+    vector& delta
+) const
+{
+    const vectorField& C = mesh_.C();
+    scalar bestCos = 0.9;
+    bool found = false;
+    for (const label facei : mesh_.cells()[celli])
+    {
+        label cellj = -1;
+        labelPair face(-1, -1);
+        vector d;
+        if (mesh_.isInternalFace(facei))
+        {
+            cellj =
+                mesh_.owner()[facei] == celli
+              ? mesh_.neighbour()[facei]
+              : mesh_.owner()[facei];
+            d = C[cellj] - C[celli];
+        }
+        else
+        {
+            const label patchi = mesh_.boundaryMesh().whichPatch(facei);
+            const fvPatch& fp = mesh_.boundary()[patchi];
+            if (isA<emptyFvPatch>(fp))
+            {
+                continue;
+            }
+            face = labelPair(patchi, facei - fp.start());
+            d =
+                fp.coupled()
+              ? coupledDeltas_[patchi][face.second()]
+              : fp.Cf()[face.second()] - C[celli];
+        }
+        const scalar c = (d & e)/mag(d);
+        if (c > bestCos)
+        {
+            bestCos = c;
+            nbrCell = cellj;
+            nbrFace = face;
+            delta = d;
+            found = true;
+        }
+    }
+    return found;
 }
 
 
@@ -591,6 +694,9 @@ Foam::fv::rigidProjection::rigidProjection
     heldForce_(force_.primitiveField()),
     inside_(mesh.nCells(), false),
     coupledDeltas_(mesh.boundary().size()),
+    secondLayerCell_(mesh.nBoundaryFaces(), -1),
+    secondLayerDelta_(mesh.nBoundaryFaces(), Zero),
+    secondLayerAcross_(mesh.nBoundaryFaces(), false),
     regionTimeIndex_(-1)
 {
     fieldNames_.setSize(1, "U");
@@ -606,6 +712,47 @@ Foam::fv::rigidProjection::rigidProjection
                 new vectorField(mesh.boundary()[patchi].delta())
             );
         }
+    }
+
+    // The cell behind each boundary face's cell, along the inward normal,
+    // and its offset; the offsets of the other side of coupled faces
+    const vectorField& C = mesh.C();
+    forAll(secondLayerCell_, bFacei)
+    {
+        const label facei = mesh.nInternalFaces() + bFacei;
+        const label celli = mesh.faceOwner()[facei];
+        const vector inward(-mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]));
+        scalar bestCos = 0.9;
+        for (const label facej : mesh.cells()[celli])
+        {
+            if (!mesh.isInternalFace(facej))
+            {
+                continue;
+            }
+            const label cellj =
+                mesh.faceOwner()[facej] == celli
+              ? mesh.faceNeighbour()[facej]
+              : mesh.faceOwner()[facej];
+            const vector d(C[cellj] - C[celli]);
+            const scalar c = (d & inward)/mag(d);
+            if (c > bestCos)
+            {
+                bestCos = c;
+                secondLayerCell_[bFacei] = cellj;
+                secondLayerDelta_[bFacei] = d;
+            }
+        }
+    }
+    syncTools::swapBoundaryFaceList(mesh, secondLayerDelta_);
+    labelList hasSecondLayer(mesh.nBoundaryFaces());
+    forAll(hasSecondLayer, bFacei)
+    {
+        hasSecondLayer[bFacei] = secondLayerCell_[bFacei] >= 0 ? 1 : 0;
+    }
+    syncTools::swapBoundaryFaceList(mesh, hasSecondLayer);
+    forAll(hasSecondLayer, bFacei)
+    {
+        secondLayerAcross_[bFacei] = hasSecondLayer[bFacei] > 0;
     }
 
     read(dict);
@@ -724,6 +871,18 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
 
     // Values across coupled faces, fetched once per patch
     PtrList<vectorField> neighbourValues(mesh_.boundary().size());
+    // Second-layer values across coupled faces: each side sends the value
+    // of the cell behind each of its coupled faces
+    vectorField secondLayerU(mesh_.nBoundaryFaces(), Zero);
+    forAll(secondLayerU, bFacei)
+    {
+        if (secondLayerCell_[bFacei] >= 0)
+        {
+            secondLayerU[bFacei] = u[secondLayerCell_[bFacei]];
+        }
+    }
+    syncTools::swapBoundaryFaceList(mesh_, secondLayerU);
+
     auto sampleValue = [&](const label i, const label k) -> vector
     {
         const label celli = sampleCells_[i][k];
@@ -732,6 +891,14 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
             return u[celli];
         }
         const labelPair& face = sampleFaces_[i][k];
+        if (celli == secondLayerSample)
+        {
+            return secondLayerU
+            [
+                mesh_.boundary()[face.first()].start() + face.second()
+              - mesh_.nInternalFaces()
+            ];
+        }
         const fvPatchVectorField& pf = U.boundaryField()[face.first()];
         if (pf.coupled())
         {
