@@ -115,3 +115,39 @@ def test_time_step_above_the_viscous_limit(meshed, tmp_path):
     log = run_with(meshed, tmp_path, None, edit=edit)
     assert "viscous number" in log and "maxViscousNumber 4" in log
     assert "controlDict" in log and "Reduce deltaT to at most" in log
+
+
+PAIR = ("materials (particle wall); law overlapVolume; stiffness 1e9;"
+        " restitution 0.5; friction 0.3;")
+
+
+@pytest.mark.parametrize("contact, expected", [
+    ("pairs { }",
+     ["No contact law for materials (particle wall)", "'pairs'"]),
+    ("pairs { pw { " + PAIR.replace("0.5", "1.5") + " } }",
+     ["restitution 1.5 of contact pair pw must be in (0, 1]"]),
+    ("pairs { pw { " + PAIR + " stifness 3; } }",
+     ["Unknown keyword 'stifness' for contact pair pw"]),
+    ("pairs { pw { " + PAIR.replace("overlapVolume", "hertz") + " } }",
+     ["hertz", "overlapVolume", "linearSpringDashpot"]),
+    ("pairs { pw { " + PAIR.replace(" stiffness 1e9;", "") + " } }",
+     ["Contact pair pw", "needs either 'stiffness' or 'contactTime'"]),
+    ("stepsPerContact 2; pairs { pw { " + PAIR + " } }",
+     ["stepsPerContact 2 must be at least 4"]),
+    ("overlaps exact; pairs { pw { " + PAIR + " } }",
+     ["Unknown keyword 'overlaps' in the contact settings"]),
+    ("pairs { pw { " + PAIR + " } } walls { lid { type plane; point (0 0 1); } }",
+     ["'normal'", "walls.lid"]),
+    ("pairs { pw { " + PAIR + " } } walls { lid { type plane; point (0 0 1);"
+     " normal (0 0 1); radius 3; } }",
+     ["Unknown keyword 'radius' for wall lid (type plane)"]),
+    ("pairs { pw { " + PAIR + " } } walls { funnel { type surface; file \"none.stl\"; } }",
+     ["Wall funnel: cannot find the surface file", "none.stl"]),
+])
+def test_bad_contact_input(meshed, tmp_path, contact, expected):
+    def add_contact(case):
+        path = case.path / "constant" / "particleProperties"
+        path.write_text(path.read_text() + "contact\n{\n" + contact + "\n}\n")
+    log = run_with(meshed, tmp_path, "sphere { " + GOOD + " }", edit=add_contact)
+    for text in expected:
+        assert text in log, f"'{text}' missing from:\n{log[-2000:]}"

@@ -10,7 +10,7 @@ HERE = pathlib.Path(__file__).parent
 
 
 @pytest.mark.parametrize("case, tags", [
-    ("box3D", "[geometry],[3D]"),
+    ("box3D", "[geometry],[3D],[contact]"),
     ("box2D", "[2D]"),
 ])
 def test_library_unit_tests(tmp_path, foam_env, case, tags):

@@ -26,7 +26,7 @@ void Foam::dlmParticle::checkKeywords(const dictionary& dict) const
     ({
         "shape", "density", "position", "velocity", "angularVelocity",
         "orientation", "motion", "velocity0", "angularVelocity0", "force",
-        "torque"
+        "torque", "material", "contactForce", "contactTorque"
     });
     known.insert(shape_->keywords());
 
@@ -50,6 +50,7 @@ Foam::dlmParticle::dlmParticle(const dictionary& dict)
 :
     name_(dict.dictName()),
     shape_(particleShape::New(dict)),
+    material_(dict.getOrDefault<word>("material", "particle")),
     density_(dict.get<scalar>("density")),
     motion_
     (
@@ -65,7 +66,9 @@ Foam::dlmParticle::dlmParticle(const dictionary& dict)
         dict.getOrDefault<vector>("angularVelocity0", angularVelocity_)
     ),
     force_(dict.getOrDefault<vector>("force", Zero)),
-    torque_(dict.getOrDefault<vector>("torque", Zero))
+    torque_(dict.getOrDefault<vector>("torque", Zero)),
+    contactForce_(dict.getOrDefault<vector>("contactForce", Zero)),
+    contactTorque_(dict.getOrDefault<vector>("contactTorque", Zero))
 {
     checkKeywords(dict);
 
@@ -92,6 +95,7 @@ Foam::dlmParticle::dlmParticle(const dlmParticle& p)
 :
     name_(p.name_),
     shape_(p.shape_->clone()),
+    material_(p.material_),
     density_(p.density_),
     motion_(p.motion_),
     position_(p.position_),
@@ -101,7 +105,9 @@ Foam::dlmParticle::dlmParticle(const dlmParticle& p)
     velocity0_(p.velocity0_),
     angularVelocity0_(p.angularVelocity0_),
     force_(p.force_),
-    torque_(p.torque_)
+    torque_(p.torque_),
+    contactForce_(p.contactForce_),
+    contactTorque_(p.contactTorque_)
 {}
 
 
@@ -130,11 +136,29 @@ void Foam::dlmParticle::move(const scalar deltaT)
 }
 
 
+void Foam::dlmParticle::setMotion
+(
+    const point& X,
+    const vector& U,
+    const vector& omega,
+    const quaternion& q
+)
+{
+    position_ = X;
+    velocity_ = U;
+    angularVelocity_ = omega;
+    orientation_ = q;
+    velocity0_ = U;
+    angularVelocity0_ = omega;
+}
+
+
 void Foam::dlmParticle::write(Ostream& os) const
 {
     os.beginBlock(name_);
     shape_->write(os);
     os.writeEntry("density", density_);
+    os.writeEntry("material", material_);
     os.writeEntry("motion", motionTypeNames[motion_]);
     os.writeEntry("position", position_);
     os.writeEntry("velocity", velocity_);
@@ -144,6 +168,8 @@ void Foam::dlmParticle::write(Ostream& os) const
     os.writeEntry("angularVelocity0", angularVelocity0_);
     os.writeEntry("force", force_);
     os.writeEntry("torque", torque_);
+    os.writeEntry("contactForce", contactForce_);
+    os.writeEntry("contactTorque", contactTorque_);
     os.endBlock();
 }
 

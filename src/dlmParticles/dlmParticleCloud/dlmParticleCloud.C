@@ -155,7 +155,11 @@ void Foam::dlmParticleCloud::checkParticles()
         }
     }
 
-    // Overlap is not allowed until contact forces exist
+    // Without contact forces nothing would part overlapping particles
+    if (properties_.found("contact"))
+    {
+        return;
+    }
     forAll(particles_, i)
     {
         const dlmParticle& pi = particles_[i];
@@ -228,7 +232,7 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
 
         if (f > 0)
         {
-            if (boundaryCell_[celli] && p.isFree())
+            if (boundaryCell_[celli] && p.isFree() && !contact_.valid())
             {
                 touchingBoundary_ = true;
             }
@@ -376,7 +380,8 @@ void Foam::dlmParticleCloud::writeVTK() const
 Foam::dlmParticleCloud::dlmParticleCloud
 (
     const fvMesh& mesh,
-    const dimensionedScalar& rhoFluid
+    const dimensionedScalar& rhoFluid,
+    const bool dry
 )
 :
     regIOobject
@@ -421,6 +426,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     ),
     boundaryCell_(mesh.nCells(), false),
     touchingBoundary_(false),
+    resolved_(!dry),
     splitDirections_(Zero),
     alpha_
     (
@@ -457,7 +463,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     const wordHashSet known
     ({
         "surfaceResolution", "particles", "particleFile",
-        "particleFileDefaults", "FoamFile"
+        "particleFileDefaults", "contact", "FoamFile"
     });
     for (const entry& e : properties_)
     {
@@ -477,11 +483,12 @@ Foam::dlmParticleCloud::dlmParticleCloud
 
     // On restart the state written with the start time replaces the input
     const fileName statePath(objectPath());
+    dictionary state;
     if (isFile(statePath))
     {
         Info<< "Reading particle state from " << statePath << endl;
         IFstream is(statePath);
-        const dictionary state(is);
+        state.read(is);
         readParticles(state.subDict("particles"));
     }
     else
@@ -521,14 +528,27 @@ Foam::dlmParticleCloud::dlmParticleCloud
 
     checkParticles();
 
+    if (properties_.found("contact"))
+    {
+        const dictionary& contactDict = properties_.subDict("contact");
+        if (contactDict.getOrDefault<bool>("active", true))
+        {
+            contact_.reset(new particleContact(*this, contactDict, state));
+            resolved_ = resolved_ || contact_->needsFractions();
+        }
+    }
+
     cells_.setSize(particles_.size());
     fractions_.setSize(particles_.size());
     nearCells_.setSize(particles_.size());
-    forAll(particles_, i)
+    if (resolved_)
     {
-        updateFractions(i);
+        forAll(particles_, i)
+        {
+            updateFractions(i);
+        }
+        updateFields();
     }
-    updateFields();
 
     Info<< "Particles: " << particles_.size() << endl;
 }
@@ -558,18 +578,43 @@ void Foam::dlmParticleCloud::move()
     const scalar deltaT = mesh_.time().deltaTValue();
 
     touchingBoundary_ = false;
-    forAll(particles_, i)
+    if (contact_.valid())
     {
-        dlmParticle& p = particles_[i];
-        if (p.motion() != dlmParticle::motionType::fixed)
+        // Held accelerations of the step: fluid and gravity, as projected
+        vectorField accel(particles_.size(), Zero);
+        vectorField angularAccel(particles_.size(), Zero);
+        forAll(particles_, i)
+        {
+            const dlmParticle& p = particles_[i];
+            if (p.isFree())
+            {
+                accel[i] = (p.velocity() - p.velocity0())/deltaT;
+                angularAccel[i] =
+                    (p.angularVelocity() - p.angularVelocity0())/deltaT;
+            }
+        }
+        contact_->evolve(deltaT, accel, angularAccel);
+    }
+    else
+    {
+        for (dlmParticle& p : particles_)
         {
             p.move(deltaT);
-            updateFractions(i);
         }
     }
-    reduce(touchingBoundary_, orOp<bool>());
 
-    updateFields();
+    if (resolved_)
+    {
+        forAll(particles_, i)
+        {
+            if (particles_[i].motion() != dlmParticle::motionType::fixed)
+            {
+                updateFractions(i);
+            }
+        }
+        reduce(touchingBoundary_, orOp<bool>());
+        updateFields();
+    }
 
     workTime_ += timer.elapsedCpuTime();
 }
@@ -591,10 +636,12 @@ void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
             historyFile_().precision(15);
             historyFile_()
                 << "# time particle x y z Ux Uy Uz omegax omegay omegaz"
-                << " Fx Fy Fz Tx Ty Tz" << nl
+                << " Fx Fy Fz Tx Ty Tz Fcx Fcy Fcz Tcx Tcy Tcz" << nl
                 << "# F, T: hydrodynamic force and torque (about the"
                 << " centroid)" << (twoD() ? " on the mesh's depth" : "")
-                << endl;
+                << nl
+                << "# Fc, Tc: mean contact force and torque of the step"
+                << (twoD() ? " per unit depth" : "") << endl;
         }
 
         OFstream& os = historyFile_();
@@ -605,7 +652,7 @@ void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
             for (const vector& v :
                 {
                     p.position(), p.velocity(), p.angularVelocity(),
-                    p.force(), p.torque()
+                    p.force(), p.torque(), p.contactForce(), p.contactTorque()
                 })
             {
                 os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
@@ -633,6 +680,11 @@ bool Foam::dlmParticleCloud::writeData(Ostream& os) const
         p.write(os);
     }
     os.endBlock();
+
+    if (contact_.valid())
+    {
+        contact_->write(os);
+    }
 
     os.precision(oldPrecision);
 

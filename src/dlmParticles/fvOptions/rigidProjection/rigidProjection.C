@@ -816,12 +816,27 @@ void Foam::fv::rigidProjection::addSup
         const dlmParticle& p = cloud.particles()[i];
         if (p.isFree())
         {
-            const vector density((p.density() - rhoFluid)*g);
+            // Reduced weight, and the mean contact force and torque of the
+            // last step (the contact sub-steps already moved the particle
+            // with them; this passes their impulse to the mixture)
+            const vector density
+            (
+                (p.density() - rhoFluid)*g + p.contactForce()/p.shape().volume()
+            );
+            const tensor R(p.R());
+            const vector spin
+            (
+                inv(R & p.shape().inertiaPerUnitDensity() & R.T())
+              & p.contactTorque()
+            );
+            const vectorField& C = mesh_.C();
             const DynamicList<label>& cells = cloud.cells(i);
             const DynamicList<scalar>& fractions = cloud.fractions(i);
             forAll(cells, k)
             {
-                source[cells[k]] += fractions[k]*density;
+                source[cells[k]] +=
+                    fractions[k]
+                   *(density + (spin ^ (C[cells[k]] - p.position())));
             }
         }
     }

@@ -6,6 +6,7 @@
 
 #include "disk.H"
 #include "cutCellFraction.H"
+#include "overlapGeometry.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -132,6 +133,38 @@ Foam::scalar Foam::particleShapes::disk::boxFraction
             lo.y(),
             hi.y()
         )/area;
+}
+
+
+Foam::scalar Foam::particleShapes::disk::planeOverlap
+(
+    const vector& n,
+    const scalar distance
+) const
+{
+    return overlapGeometry::circleSegmentArea(radius_, radius_ - distance);
+}
+
+
+bool Foam::particleShapes::disk::pairOverlap
+(
+    const particleShape& other,
+    const scalar distance,
+    scalar& volume,
+    scalar& planeDistance
+) const
+{
+    if (!isA<disk>(other))
+    {
+        return false;
+    }
+    const scalar otherRadius = refCast<const disk>(other).radius_;
+    volume = overlapGeometry::circleLensArea(radius_, otherRadius, distance);
+    planeDistance =
+        distance > VSMALL
+      ? overlapGeometry::lensPlaneDistance(radius_, otherRadius, distance)
+      : 0;
+    return true;
 }
 
 

@@ -161,4 +161,29 @@ Foam::scalar Foam::particleShape::boxFraction
 }
 
 
+Foam::scalar Foam::particleShape::planeOverlap
+(
+    const vector& n,
+    const scalar distance
+) const
+{
+    FatalErrorInFunction
+        << "Shape " << type() << " has no exact formula for its overlap with"
+        << " a wall" << exit(FatalError);
+    return 0;
+}
+
+
+bool Foam::particleShape::pairOverlap
+(
+    const particleShape& other,
+    const scalar distance,
+    scalar& volume,
+    scalar& planeDistance
+) const
+{
+    return false;
+}
+
+
 // ************************************************************************* //

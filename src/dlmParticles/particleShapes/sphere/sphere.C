@@ -6,6 +6,7 @@
 
 #include "sphere.H"
 #include "cutCellFraction.H"
+#include "overlapGeometry.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -123,6 +124,38 @@ Foam::scalar Foam::particleShapes::sphere::boxFraction
         return 1;
     }
     return cutCellFraction::sphereBoxVolume(radius_, lo, hi)/bb.volume();
+}
+
+
+Foam::scalar Foam::particleShapes::sphere::planeOverlap
+(
+    const vector& n,
+    const scalar distance
+) const
+{
+    return overlapGeometry::sphereCapVolume(radius_, radius_ - distance);
+}
+
+
+bool Foam::particleShapes::sphere::pairOverlap
+(
+    const particleShape& other,
+    const scalar distance,
+    scalar& volume,
+    scalar& planeDistance
+) const
+{
+    if (!isA<sphere>(other))
+    {
+        return false;
+    }
+    const scalar otherRadius = refCast<const sphere>(other).radius_;
+    volume = overlapGeometry::sphereLensVolume(radius_, otherRadius, distance);
+    planeDistance =
+        distance > VSMALL
+      ? overlapGeometry::lensPlaneDistance(radius_, otherRadius, distance)
+      : 0;
+    return true;
 }
 
 

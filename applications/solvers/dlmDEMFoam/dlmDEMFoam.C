@@ -1,0 +1,93 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+-------------------------------------------------------------------------------
+Application
+    dlmDEMFoam
+
+Description
+    Dry particles: the particles of constant/particleProperties under gravity
+    (constant/g) and their contacts, with no fluid (a discrete element
+    method run, for contact checks and granular scenes). The mesh gives the
+    domain and, unless the contact settings say 'meshWalls false', the
+    walls; no field is solved and, with the exact overlap, no volume
+    fraction is computed.
+
+    Each step the free particles take gravity's impulse, then the contact
+    sub-steps move them (particleContact). The output is pimpleDLMFoam's:
+    postProcessing/particles, VTK/particles and <time>/uniform/particles for
+    restart. At the end the run prints its particle-steps per second.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "dlmParticleCloud.H"
+#include "uniformDimensionedFields.H"
+#include "cpuTime.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Dry particles under gravity with contacts (no fluid)."
+    );
+
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "readGravitationalAcceleration.H"
+
+    Info<< "Reading particles\n" << endl;
+    dlmParticleCloud particles
+    (
+        mesh,
+        dimensionedScalar(dimDensity, Zero),
+        true
+    );
+
+    const vector gravity(g.value());
+    label particleSteps = 0;
+    const cpuTime timer;
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        const scalar deltaT = runTime.deltaTValue();
+        for (dlmParticle& p : particles.particles())
+        {
+            if (p.isFree())
+            {
+                p.setVelocities
+                (
+                    p.velocity0() + gravity*deltaT,
+                    p.angularVelocity0()
+                );
+            }
+        }
+        particles.setProjected();
+        particles.move();
+        particles.writeStep();
+        particleSteps += particles.particles().size();
+
+        runTime.write();
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "Particle-steps per CPU second: "
+        << particleSteps/max(timer.elapsedCpuTime(), SMALL) << nl << endl;
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,236 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "contactLaw.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(contactLaw, 0);
+    defineRunTimeSelectionTable(contactLaw, dictionary);
+}
+
+const Foam::Enum<Foam::contactLaw::tangentialType>
+Foam::contactLaw::tangentialTypeNames
+({
+    { tangentialType::coulomb, "coulomb" },
+    { tangentialType::spring, "spring" },
+});
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::contactLaw::collide
+(
+    const scalar n,
+    const scalar beta,
+    scalar& restitution,
+    scalar& contactTime
+)
+{
+    // Clipped at zero: the contact ends when the force would pull
+    auto acceleration = [n, beta](const scalar x, const scalar v)
+    {
+        const scalar xp = max(x, scalar(0));
+        return min(-pow(xp, n) - beta*sqrt(n*pow(xp, n - 1))*v, scalar(0));
+    };
+
+    const scalar h = 1e-4;
+    scalar x = 0;
+    scalar v = 1;
+    scalar t = 0;
+    while (t < 1e3)
+    {
+        const scalar k1x = v;
+        const scalar k1v = acceleration(x, v);
+        const scalar k2x = v + 0.5*h*k1v;
+        const scalar k2v = acceleration(x + 0.5*h*k1x, k2x);
+        const scalar k3x = v + 0.5*h*k2v;
+        const scalar k3v = acceleration(x + 0.5*h*k2x, k3x);
+        const scalar k4x = v + h*k3v;
+        const scalar k4v = acceleration(x + h*k3x, k4x);
+
+        const scalar x1 = x + h*(k1x + 2*k2x + 2*k3x + k4x)/6;
+        const scalar v1 = v + h*(k1v + 2*k2v + 2*k3v + k4v)/6;
+
+        if (x1 <= 0)
+        {
+            // Back at zero overlap within this step
+            const scalar s = x/(x - x1);
+            restitution = -(v + s*(v1 - v));
+            contactTime = t + s*h;
+            return;
+        }
+        if (v1 < 0 && acceleration(x1, v1) == 0)
+        {
+            // Force released while separating: the contact ends here
+            restitution = -v1;
+            contactTime = t + h;
+            return;
+        }
+        x = x1;
+        v = v1;
+        t += h;
+    }
+
+    restitution = 0;
+    contactTime = t;
+}
+
+
+void Foam::contactLaw::setDamping()
+{
+    beta_ = dampingFor(exponent(), restitution_);
+    if (beta_ < 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "restitution " << restitution_ << " of contact pair "
+            << dict_.dictName() << " is below the smallest this law reaches"
+            << " (the normal force never pulls): use a larger value"
+            << exit(FatalIOError);
+    }
+    scalar e;
+    collide(exponent(), beta_, e, tau_);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactLaw::contactLaw
+(
+    const dictionary& dict,
+    const label nDimensions
+)
+:
+    dict_(dict),
+    nDimensions_(nDimensions),
+    restitution_(dict.get<scalar>("restitution")),
+    friction_(dict.get<scalar>("friction")),
+    tangential_
+    (
+        tangentialTypeNames.getOrDefault
+        (
+            "tangential",
+            dict,
+            tangentialType::spring
+        )
+    ),
+    tangentialStiffnessRatio_
+    (
+        dict.getOrDefault<scalar>("tangentialStiffnessRatio", 2.0/7.0)
+    ),
+    tangentialDampingRatio_
+    (
+        dict.getOrDefault<scalar>("tangentialDampingRatio", 1)
+    ),
+    beta_(0),
+    tau_(0)
+{
+    if (restitution_ <= 0 || restitution_ > 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "restitution " << restitution_ << " of contact pair "
+            << dict.dictName() << " must be in (0, 1]" << exit(FatalIOError);
+    }
+    if (friction_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "friction " << friction_ << " of contact pair "
+            << dict.dictName() << " must not be negative"
+            << exit(FatalIOError);
+    }
+    if (tangentialStiffnessRatio_ <= 0 || tangentialDampingRatio_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "tangentialStiffnessRatio must be positive and"
+            << " tangentialDampingRatio not negative (contact pair "
+            << dict.dictName() << ")" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::contactLaw::keywords() const
+{
+    return wordList
+    ({
+        "materials", "law", "restitution", "friction", "tangential",
+        "tangentialStiffnessRatio", "tangentialDampingRatio"
+    });
+}
+
+
+Foam::scalar Foam::contactLaw::normalForce
+(
+    const scalar V,
+    const scalar delta,
+    const scalar radius,
+    const scalar mass,
+    const scalar approachSpeed,
+    scalar& stiffness,
+    scalar& damping
+) const
+{
+    scalar force;
+    elastic(V, delta, radius, force, stiffness);
+    damping = beta_*sqrt(mass*stiffness);
+    return max(force + damping*approachSpeed, scalar(0));
+}
+
+
+Foam::scalar Foam::contactLaw::contactTime
+(
+    const scalar radius,
+    const scalar mass,
+    const scalar v
+) const
+{
+    const scalar n = exponent();
+    const scalar delta0 =
+        pow(mass*sqr(v)/leadingCoefficient(radius), 1/(n + 1));
+    return tau_*delta0/v;
+}
+
+
+Foam::scalar Foam::contactLaw::restitution(const scalar n, const scalar beta)
+{
+    scalar e, tau;
+    collide(n, beta, e, tau);
+    return e;
+}
+
+
+Foam::scalar Foam::contactLaw::dampingFor(const scalar n, const scalar e)
+{
+    if (e >= 1)
+    {
+        return 0;
+    }
+
+    // Restitution falls as beta grows: bracket, then bisect
+    scalar lower = 0;
+    scalar upper = 1;
+    while (restitution(n, upper) > e)
+    {
+        lower = upper;
+        upper *= 2;
+        if (upper > 1e3)
+        {
+            return -1;
+        }
+    }
+    for (label iter = 0; iter < 60 && upper - lower > 1e-10*upper; ++iter)
+    {
+        const scalar mid = 0.5*(lower + upper);
+        (restitution(n, mid) > e ? lower : upper) = mid;
+    }
+    return 0.5*(lower + upper);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,79 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "contactWall.H"
+#include "HashSet.H"
+#include "FlatOutput.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(contactWall, 0);
+    defineRunTimeSelectionTable(contactWall, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactWall::contactWall(const dictionary& dict)
+:
+    name_(dict.dictName()),
+    material_(dict.getOrDefault<word>("material", "wall"))
+{}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::contactWall> Foam::contactWall::New
+(
+    const dictionary& dict,
+    const polyMesh& mesh
+)
+{
+    const word wallType(dict.get<word>("type"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(wallType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "type",
+            wallType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    autoPtr<contactWall> wall(cstrIter()(dict, mesh));
+
+    const wordHashSet known(wall->keywords());
+    for (const entry& e : dict)
+    {
+        if (!known.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << e.keyword() << "' for wall "
+                << dict.dictName() << " (type " << wallType << "). Known"
+                << " keywords: " << flatOutput(known.sortedToc())
+                << exit(FatalIOError);
+        }
+    }
+
+    return wall;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::contactWall::keywords() const
+{
+    return wordList({"type", "material"});
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,110 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "cylinder.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace contactWalls
+{
+    defineTypeNameAndDebug(cylinder, 0);
+    addToRunTimeSelectionTable(contactWall, cylinder, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::contactWalls::cylinder::nearest
+(
+    const point& X,
+    point& location,
+    vector& normal,
+    scalar& distance
+) const
+{
+    const vector r(X - point_);
+    const vector radial(r - (r & axis_)*axis_);
+    const scalar rho = mag(radial);
+    const vector outward(rho > VSMALL ? radial/rho : vector(Zero));
+    location = X - radial + radius_*outward;
+    distance = mag(rho - radius_);
+    normal = rho < radius_ ? -outward : outward;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactWalls::cylinder::cylinder
+(
+    const dictionary& dict,
+    const polyMesh& mesh
+)
+:
+    contactWall(dict),
+    point_(dict.get<point>("point")),
+    axis_(normalised(dict.get<vector>("axis"))),
+    radius_(dict.get<scalar>("radius"))
+{
+    if (radius_ <= 0 || mag(dict.get<vector>("axis")) < VSMALL)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Wall " << name() << " needs a positive radius and a non-zero"
+            << " axis" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::contactWalls::cylinder::keywords() const
+{
+    wordList words(contactWall::keywords());
+    words.append(wordList({"point", "axis", "radius"}));
+    return words;
+}
+
+
+void Foam::contactWalls::cylinder::near
+(
+    const point& X,
+    const scalar reach,
+    DynamicList<label>& features
+) const
+{
+    point location;
+    vector normal;
+    scalar distance;
+    nearest(X, location, normal, distance);
+    if (distance < reach)
+    {
+        features.append(0);
+    }
+}
+
+
+void Foam::contactWalls::cylinder::contacts
+(
+    const point& X,
+    const scalar R,
+    const labelUList& features,
+    DynamicList<wallContact>& found
+) const
+{
+    wallContact c;
+    nearest(X, c.location, c.normal, c.distance);
+    if (c.distance < R)
+    {
+        c.feature = 0;
+        found.append(c);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,261 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "surface.H"
+#include "polyMesh.H"
+#include "Time.H"
+#include "EdgeMap.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace contactWalls
+{
+    defineTypeNameAndDebug(surface, 0);
+    addToRunTimeSelectionTable(contactWall, surface, dictionary);
+}
+}
+
+namespace
+{
+    //- Normals within this of parallel are coplanar faces
+    const Foam::scalar coplanarTol = 1e-6;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::contactWalls::surface::analyse()
+{
+    const triSurface& surf = *surface_;
+    const pointField& points = surf.points();
+
+    EdgeMap<labelList> edgeFaces;
+    forAll(surf, facei)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            edgeFaces(surf[facei].faceEdge(k)).append(facei);
+        }
+    }
+
+    rimEdge_.setSize(3*surf.size());
+    rimPoint_.setSize(points.size(), false);
+    forAll(surf, facei)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            const edge e(surf[facei].faceEdge(k));
+            rimEdge_[3*facei + k] = edgeFaces[e].size() == 1;
+            if (rimEdge_[3*facei + k])
+            {
+                rimPoint_[e.first()] = true;
+                rimPoint_[e.second()] = true;
+            }
+        }
+    }
+
+    // Flood coplanar neighbours into facets
+    facet_.setSize(surf.size(), -1);
+    label nFacets = 0;
+    forAll(surf, seed)
+    {
+        if (facet_[seed] >= 0)
+        {
+            continue;
+        }
+        const vector n(surf[seed].unitNormal(points));
+        DynamicList<label> front({seed});
+        facet_[seed] = nFacets;
+        while (front.size())
+        {
+            const label facei = front.remove();
+            for (label k = 0; k < 3; ++k)
+            {
+                for (const label nbr : edgeFaces[surf[facei].faceEdge(k)])
+                {
+                    if
+                    (
+                        facet_[nbr] < 0
+                     && mag(surf[nbr].unitNormal(points) & n) > 1 - coplanarTol
+                    )
+                    {
+                        facet_[nbr] = nFacets;
+                        front.append(nbr);
+                    }
+                }
+            }
+        }
+        ++nFacets;
+    }
+
+    search_.reset(new triSurfaceSearch(surf));
+}
+
+
+void Foam::contactWalls::surface::setSurface(autoPtr<triSurface>&& surf)
+{
+    surface_ = std::move(surf);
+    analyse();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactWalls::surface::surface
+(
+    const dictionary& dict,
+    const polyMesh& mesh
+)
+:
+    contactWall(dict)
+{
+    fileName file(dict.get<fileName>("file"));
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        file = mesh.time().constantPath()/"triSurface"/file;
+    }
+    if (!isFile(file))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Wall " << name() << ": cannot find the surface file " << file
+            << exit(FatalIOError);
+    }
+    const scalar scale = dict.getOrDefault<scalar>("scale", 1);
+
+    setSurface(autoPtr<triSurface>::New(file, scale));
+    Info<< "Contact wall " << name() << ": " << surface_->size()
+        << " faces from " << file << endl;
+}
+
+
+Foam::contactWalls::surface::surface(const dictionary& dict)
+:
+    contactWall(dict)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::contactWalls::surface::keywords() const
+{
+    wordList words(contactWall::keywords());
+    words.append(wordList({"file", "scale"}));
+    return words;
+}
+
+
+void Foam::contactWalls::surface::near
+(
+    const point& X,
+    const scalar reach,
+    DynamicList<label>& features
+) const
+{
+    features.append(search_->tree().findSphere(X, sqr(reach)));
+}
+
+
+void Foam::contactWalls::surface::contacts
+(
+    const point& X,
+    const scalar R,
+    const labelUList& features,
+    DynamicList<wallContact>& found
+) const
+{
+    const triSurface& surf = *surface_;
+    const pointField& points = surf.points();
+    const scalar mergeTol = 1e-6*R;
+
+    // Contacts with faces, then with rims; triangles' normals alongside
+    DynamicList<wallContact> faceHits;
+    DynamicList<vector> faceNormals;
+    DynamicList<wallContact> rimHits;
+    DynamicList<vector> rimNormals;
+
+    for (const label facei : features)
+    {
+        const triPointRef tri(surf[facei].tri(points));
+        label nearType, nearLabel;
+        const pointHit hit(tri.nearestPointClassify(X, nearType, nearLabel));
+        const vector d(X - hit.rawPoint());
+        const scalar distance = mag(d);
+        if (distance >= R || distance < VSMALL)
+        {
+            continue;
+        }
+        const vector n(tri.unitNormal());
+
+        wallContact c;
+        c.location = hit.rawPoint();
+        c.normal = d/distance;
+        c.distance = distance;
+
+        if
+        (
+            nearType == triPointRef::NONE
+         || mag(d & n) > (1 - coplanarTol)*distance
+        )
+        {
+            c.feature = facet_[facei];
+            faceHits.append(c);
+            faceNormals.append(n);
+        }
+        else if
+        (
+            nearType == triPointRef::EDGE
+          ? rimEdge_[3*facei + nearLabel]
+          : rimPoint_[surf[facei][nearLabel]]
+        )
+        {
+            c.feature = -1 - facei;
+            rimHits.append(c);
+            rimNormals.append(n);
+        }
+    }
+
+    // Neighbouring faces or rim edges give the same point once
+    const label start = found.size();
+    auto merged = [&](const wallContact& c)
+    {
+        for (label i = start; i < found.size(); ++i)
+        {
+            if (mag(found[i].location - c.location) < mergeTol)
+            {
+                return true;
+            }
+        }
+        return false;
+    };
+
+    for (const wallContact& c : faceHits)
+    {
+        if (!merged(c))
+        {
+            found.append(c);
+        }
+    }
+    forAll(rimHits, hiti)
+    {
+        bool onTouchedPlane = false;
+        for (const vector& n : faceNormals)
+        {
+            onTouchedPlane =
+                onTouchedPlane || mag(n & rimNormals[hiti]) > 1 - coplanarTol;
+        }
+        if (!onTouchedPlane && !merged(rimHits[hiti]))
+        {
+            found.append(rimHits[hiti]);
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,165 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "grid.H"
+#include "dlmParticleCloud.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace overlapMethods
+{
+    defineTypeNameAndDebug(grid, 0);
+    addToRunTimeSelectionTable(overlapMethod, grid, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::overlapMethods::grid::grid
+(
+    const dictionary& dict,
+    const dlmParticleCloud& cloud
+)
+:
+    overlapMethod(cloud)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::overlapMethods::grid::equivalentDepth
+(
+    const scalar V,
+    const scalar R,
+    const label nDimensions
+)
+{
+    // Small-overlap lens: pi R delta^2, or 4/3 sqrt(2R) delta^1.5 in 2D
+    return
+        nDimensions == 3
+      ? sqrt(V/(constant::mathematical::pi*R))
+      : pow(0.75*V/sqrt(2*R), 2.0/3.0);
+}
+
+
+void Foam::overlapMethods::grid::prepare(const UList<labelPair>& pairs)
+{
+    commonCells_.setSize(pairs.size());
+    forAll(pairs, pairi)
+    {
+        labelList a(cloud_.nearCells(pairs[pairi].first()));
+        labelList b(cloud_.nearCells(pairs[pairi].second()));
+        Foam::sort(a);
+        Foam::sort(b);
+
+        DynamicList<label> common(min(a.size(), b.size()));
+        label ia = 0;
+        label ib = 0;
+        while (ia < a.size() && ib < b.size())
+        {
+            if (a[ia] < b[ib])
+            {
+                ++ia;
+            }
+            else if (b[ib] < a[ia])
+            {
+                ++ib;
+            }
+            else
+            {
+                common.append(a[ia]);
+                ++ia;
+                ++ib;
+            }
+        }
+        commonCells_[pairi].transfer(common);
+    }
+}
+
+
+void Foam::overlapMethods::grid::overlaps
+(
+    const UList<labelPair>& pairs,
+    List<pairOverlap>& result
+) const
+{
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    const List<boundBox>& boxes = cloud_.cellBoxes();
+    const vector& split = cloud_.splitDirections();
+    const scalarField& V = cloud_.mesh().V();
+    const vectorField& C = cloud_.mesh().C();
+    const label nDims = cloud_.twoD() ? 2 : 3;
+
+    // Volume and first moment of each pair's doubly covered volume
+    scalarList sums(4*pairs.size(), Zero);
+    forAll(pairs, pairi)
+    {
+        const dlmParticle& pi = particles[pairs[pairi].first()];
+        const dlmParticle& pj = particles[pairs[pairi].second()];
+        const tensor Ri(pi.R());
+        const tensor Rj(pj.R());
+        for (const label celli : commonCells_[pairi])
+        {
+            const scalar fi = pi.shape().boxFraction
+            (
+                boxes[celli], pi.position(), Ri, split,
+                cloud_.leafSize(pairs[pairi].first())
+            );
+            if (fi <= 0)
+            {
+                continue;
+            }
+            const scalar fj = pj.shape().boxFraction
+            (
+                boxes[celli], pj.position(), Rj, split,
+                cloud_.leafSize(pairs[pairi].second())
+            );
+            const scalar doubled = (fi + fj - 1)*V[celli];
+            if (doubled > 0)
+            {
+                sums[4*pairi] += doubled;
+                for (direction d = 0; d < 3; ++d)
+                {
+                    sums[4*pairi + 1 + d] += doubled*C[celli][d];
+                }
+            }
+        }
+    }
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+
+    const scalar depth = cloud_.meshDepth();
+    result.setSize(pairs.size());
+    forAll(pairs, pairi)
+    {
+        const label i = pairs[pairi].first();
+        const label j = pairs[pairi].second();
+        const scalar Ri = particles[i].shape().boundingRadius();
+        const scalar Rj = particles[j].shape().boundingRadius();
+        pairOverlap& o = result[pairi];
+
+        o.volume = nDims == 3 ? sums[4*pairi] : sums[4*pairi]/depth;
+        o.depth = equivalentDepth(o.volume, Ri*Rj/(Ri + Rj), nDims);
+        o.normal = centreNormal(i, j);
+        o.location =
+            sums[4*pairi] > 0
+          ? point(sums[4*pairi + 1], sums[4*pairi + 2], sums[4*pairi + 3])
+           /sums[4*pairi]
+          : 0.5*(particles[i].position() + particles[j].position());
+        if (nDims == 2)
+        {
+            o.location.z() = particles[i].position().z();
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,944 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "particleContact.H"
+#include "dlmParticleCloud.H"
+#include "mathematicalConstants.H"
+#include "HashSet.H"
+#include "IOdictionary.H"
+#include "FlatOutput.H"
+
+using Foam::constant::mathematical::pi;
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::particleContact::materialIndex(const word& name)
+{
+    const label index = materials_.find(name);
+    if (index >= 0)
+    {
+        return index;
+    }
+    materials_.append(name);
+    return materials_.size() - 1;
+}
+
+
+void Foam::particleContact::readLaws()
+{
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    // Particles' materials come first
+    const label nParticleMaterials =
+        particleMaterial_.empty() ? 0 : max(particleMaterial_) + 1;
+    const label nM = materials_.size();
+    materialLaw_.setSize(nM*nM, -1);
+
+    const dictionary& pairsDict = dict_.subDict("pairs");
+    const label nDims = cloud_.twoD() ? 2 : 3;
+
+    for (const entry& e : pairsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(pairsDict)
+                << "Entry '" << e.keyword() << "' of 'pairs' is not a"
+                << " dictionary" << exit(FatalIOError);
+        }
+        const dictionary& pairDict = e.dict();
+        const Pair<word> names(pairDict.get<Pair<word>>("materials"));
+        const label a = materials_.find(names.first());
+        const label b = materials_.find(names.second());
+        if (a < 0 || b < 0)
+        {
+            // No particle or wall of this material: nothing to do
+            continue;
+        }
+
+        // Reference contact of the pair's mean particles, for contact times
+        scalar mass = 0;
+        scalar radius = 0;
+        label n = 0;
+        forAll(particles, i)
+        {
+            if (particleMaterial_[i] == a || particleMaterial_[i] == b)
+            {
+                mass += particles[i].density()*particles[i].shape().volume();
+                radius += particles[i].shape().boundingRadius();
+                ++n;
+            }
+        }
+        contactLaw::reference ref{mass/max(n, 1), radius/max(n, 1)};
+        const bool withWall = a >= nParticleMaterials || b >= nParticleMaterials;
+        if (!withWall)
+        {
+            ref.mass /= 2;
+            ref.radius /= 2;
+        }
+
+        laws_.append(contactLaw::New(pairDict, nDims, ref));
+        const contactLaw& newLaw = laws_.last();
+
+        const wordHashSet known(newLaw.keywords());
+        for (const entry& k : pairDict)
+        {
+            if (!known.found(k.keyword()))
+            {
+                FatalIOErrorInFunction(pairDict)
+                    << "Unknown keyword '" << k.keyword() << "' for contact"
+                    << " pair " << e.keyword() << ". Known keywords: "
+                    << flatOutput(known.sortedToc()) << exit(FatalIOError);
+            }
+        }
+
+        law(a, b) = laws_.size() - 1;
+        law(b, a) = laws_.size() - 1;
+
+        Info<< "Contact pair " << e.keyword() << " (" << names.first() << ", "
+            << names.second() << "): " << pairDict.get<word>("law")
+            << ", restitution " << newLaw.restitution() << " (damping beta "
+            << newLaw.beta() << "), friction " << newLaw.friction() << " ("
+            << contactLaw::tangentialTypeNames[newLaw.tangential()]
+            << "); collision of the mean particles at 1 m/s lasts "
+            << newLaw.contactTime(ref.radius, ref.mass, 1) << " s" << endl;
+    }
+
+    // Every pair of materials that may meet needs a law
+    labelList nOfMaterial(nM, Zero);
+    for (const label a : particleMaterial_)
+    {
+        ++nOfMaterial[a];
+    }
+    for (label a = 0; a < nParticleMaterials; ++a)
+    {
+        for (label b = 0; b < nM; ++b)
+        {
+            const bool mayMeet = a != b || nOfMaterial[a] > 1;
+            if (mayMeet && law(a, b) < 0)
+            {
+                FatalIOErrorInFunction(pairsDict)
+                    << "No contact law for materials (" << materials_[a] << " "
+                    << materials_[b] << "): add an entry with 'materials ("
+                    << materials_[a] << " " << materials_[b] << ")' to"
+                    << " 'pairs'" << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+Foam::scalar Foam::particleContact::inverseMass(const label i) const
+{
+    const dlmParticle& p = cloud_.particles()[i];
+    return p.isFree() ? 1/(p.density()*p.shape().volume()) : 0;
+}
+
+
+Foam::tensor Foam::particleContact::inverseInertia
+(
+    const label i,
+    const quaternion& q
+) const
+{
+    const dlmParticle& p = cloud_.particles()[i];
+    if (!p.isFree())
+    {
+        return Zero;
+    }
+    const tensor R(q.R());
+    const tensor I(R & (p.density()*p.shape().inertiaPerUnitDensity()) & R.T());
+    return inv(I);
+}
+
+
+void Foam::particleContact::findCandidates
+(
+    const scalar deltaT,
+    const vectorField& accel
+)
+{
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    const label n = particles.size();
+
+    pairs_.clear();
+    pairLaws_.clear();
+    wallCandidates_.clear();
+    wallFeatures_.clear();
+    involved_.setSize(n);
+    involved_ = false;
+    if (n == 0)
+    {
+        return;
+    }
+
+    // Skin: twice the largest displacement of the step, and the range of
+    // lubrication
+    scalar maxSpeed = 0;
+    scalar maxRadius = 0;
+    scalar minRadius = GREAT;
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        const scalar R = p.shape().boundingRadius();
+        maxSpeed = max
+        (
+            maxSpeed,
+            max(mag(p.velocity()), mag(p.velocity0()))
+          + mag(accel[i])*deltaT
+          + max(mag(p.angularVelocity()), mag(p.angularVelocity0()))*R
+        );
+        maxRadius = max(maxRadius, R);
+        minRadius = min(minRadius, R);
+    }
+    const scalar skin =
+        2*maxSpeed*deltaT + 0.01*minRadius
+      + (lubricationViscosity_ > 0 ? lubricationRange_ : 0);
+
+    // Uniform bins of the particles' bounding box, side at least the
+    // largest interaction distance
+    boundBox bb;
+    for (const dlmParticle& p : particles)
+    {
+        bb.add(p.position());
+    }
+    const scalar binSize = 2*maxRadius + skin;
+    Vector<label> nBins;
+    for (direction d = 0; d < 3; ++d)
+    {
+        nBins[d] = max(label(bb.span()[d]/binSize), label(1));
+    }
+    // At most about 8 bins per particle
+    while (scalar(nBins.x())*nBins.y()*nBins.z() > 8.0*n + 27)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            nBins[d] = max((nBins[d] + 1)/2, label(1));
+        }
+    }
+    vector binWidth;
+    for (direction d = 0; d < 3; ++d)
+    {
+        binWidth[d] = max(bb.span()[d]/nBins[d], binSize);
+    }
+
+    auto binOf = [&](const point& X, const direction d)
+    {
+        return min
+        (
+            label((X[d] - bb.min()[d])/binWidth[d]),
+            nBins[d] - 1
+        );
+    };
+    const label nTotal = nBins.x()*nBins.y()*nBins.z();
+    labelList binStart(nTotal + 1, 0);
+    labelList binOfParticle(n);
+    forAll(particles, i)
+    {
+        const point& X = particles[i].position();
+        binOfParticle[i] =
+            binOf(X, 0) + nBins.x()*(binOf(X, 1) + nBins.y()*binOf(X, 2));
+        ++binStart[binOfParticle[i] + 1];
+    }
+    for (label b = 0; b < nTotal; ++b)
+    {
+        binStart[b + 1] += binStart[b];
+    }
+    labelList sorted(n);
+    {
+        labelList fill(SubList<label>(binStart, nTotal));
+        forAll(particles, i)
+        {
+            sorted[fill[binOfParticle[i]]++] = i;
+        }
+    }
+
+    forAll(particles, i)
+    {
+        const dlmParticle& pi = particles[i];
+        const point& Xi = pi.position();
+        const scalar Ri = pi.shape().boundingRadius();
+        const label bx = binOf(Xi, 0);
+        const label by = binOf(Xi, 1);
+        const label bz = binOf(Xi, 2);
+
+        for (label z = max(bz - 1, 0); z <= min(bz + 1, nBins.z() - 1); ++z)
+        for (label y = max(by - 1, 0); y <= min(by + 1, nBins.y() - 1); ++y)
+        for (label x = max(bx - 1, 0); x <= min(bx + 1, nBins.x() - 1); ++x)
+        {
+            const label b = x + nBins.x()*(y + nBins.y()*z);
+            for (label k = binStart[b]; k < binStart[b + 1]; ++k)
+            {
+                const label j = sorted[k];
+                const dlmParticle& pj = particles[j];
+                if (j <= i || (!pi.isFree() && !pj.isFree()))
+                {
+                    continue;
+                }
+                const scalar gap =
+                    mag(pj.position() - Xi) - Ri - pj.shape().boundingRadius();
+                if (gap < skin)
+                {
+                    pairs_.append(labelPair(i, j));
+                    pairLaws_.append
+                    (
+                        law(particleMaterial_[i], particleMaterial_[j])
+                    );
+                    involved_[i] = true;
+                    involved_[j] = true;
+                }
+            }
+        }
+
+        if (!pi.isFree())
+        {
+            continue;
+        }
+        forAll(walls_, w)
+        {
+            DynamicList<label> features;
+            walls_[w].near(Xi, Ri + skin, features);
+            if (features.size())
+            {
+                wallCandidates_.append
+                (
+                    FixedList<label, 3>
+                    ({i, w, law(particleMaterial_[i], wallMaterial_[w])})
+                );
+                wallFeatures_.append(features);
+                involved_[i] = true;
+            }
+        }
+    }
+
+    overlap_->prepare(pairs_);
+}
+
+
+Foam::scalar Foam::particleContact::impactStep
+(
+    const scalar deltaT,
+    const vectorField& accel
+) const
+{
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    // Below this the collision time is long against any sensible step
+    const scalar slowest = 1e-6;
+
+    scalar step = GREAT;
+    forAll(pairs_, k)
+    {
+        const label i = pairs_[k].first();
+        const label j = pairs_[k].second();
+        const scalar Ri = particles[i].shape().boundingRadius();
+        const scalar Rj = particles[j].shape().boundingRadius();
+        const scalar speed =
+            mag(particles[i].velocity0() - particles[j].velocity0())
+          + mag(particles[i].velocity() - particles[j].velocity())
+          + (mag(accel[i]) + mag(accel[j]))*deltaT;
+        step = min
+        (
+            step,
+            laws_[pairLaws_[k]].contactTime
+            (
+                Ri*Rj/(Ri + Rj),
+                1/(inverseMass(i) + inverseMass(j)),
+                max(speed, slowest)
+            )
+        );
+    }
+    forAll(wallCandidates_, k)
+    {
+        const label i = wallCandidates_[k][0];
+        const scalar speed =
+            mag(particles[i].velocity0()) + mag(particles[i].velocity())
+          + mag(accel[i])*deltaT;
+        step = min
+        (
+            step,
+            laws_[wallCandidates_[k][2]].contactTime
+            (
+                particles[i].shape().boundingRadius(),
+                1/inverseMass(i),
+                max(speed, slowest)
+            )
+        );
+    }
+    return step/stepsPerContact_;
+}
+
+
+Foam::vector Foam::particleContact::tangentialForce
+(
+    const contactLaw& law,
+    const contactKey& key,
+    const vector& sliding,
+    const vector& normal,
+    const scalar normalForce,
+    const scalar stiffness,
+    const scalar damping,
+    const scalar h
+)
+{
+    const scalar limit = law.friction()*normalForce;
+    const scalar ct = law.tangentialDampingRatio()*damping;
+
+    if (law.tangential() == contactLaw::tangentialType::coulomb)
+    {
+        vector F(-ct*sliding);
+        const scalar magF = mag(F);
+        return magF > limit ? F*limit/magF : F;
+    }
+
+    // Spring on the sliding displacement, kept in the tangent plane
+    auto iter = history_.find(key);
+    if (!iter.found())
+    {
+        history_.insert(key, Tuple2<vector, label>(Zero, evaluation_));
+        iter = history_.find(key);
+    }
+    vector& xi = iter().first();
+    iter().second() = evaluation_;
+
+    const scalar magXi = mag(xi);
+    xi -= (xi & normal)*normal;
+    const scalar magTangent = mag(xi);
+    if (magTangent > VSMALL)
+    {
+        xi *= magXi/magTangent;
+    }
+    xi += sliding*h;
+
+    const scalar kt = law.tangentialStiffnessRatio()*stiffness;
+    vector F(-kt*xi - ct*sliding);
+    const scalar magF = mag(F);
+    if (magF > limit)
+    {
+        // Sliding: the spring holds what friction allows
+        F *= limit/magF;
+        xi = kt > 0 ? vector(-(F + ct*sliding)/kt) : vector(Zero);
+    }
+    return F;
+}
+
+
+void Foam::particleContact::applyContact
+(
+    const label i,
+    const label j,
+    const contactLaw& law,
+    const contactKey& key,
+    const scalar V,
+    const scalar depth,
+    const point& location,
+    const vector& normal,
+    const scalar h
+)
+{
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    const scalar Ri = particles[i].shape().boundingRadius();
+
+    const vector ri(location - position_[i]);
+    vector relative(-(velocity_[i] + (omega_[i] ^ ri)));
+    scalar invMass = inverseMass(i);
+    scalar radius = Ri;
+    vector rj(Zero);
+    if (j >= 0)
+    {
+        const scalar Rj = particles[j].shape().boundingRadius();
+        rj = location - position_[j];
+        relative += velocity_[j] + (omega_[j] ^ rj);
+        invMass += inverseMass(j);
+        radius = Ri*Rj/(Ri + Rj);
+    }
+    const scalar mass = 1/invMass;
+
+    // relative: velocity of j (or the wall) seen from i; normal from i to j
+    scalar stiffness, damping;
+    const scalar Fn = law.normalForce
+    (
+        V, depth, radius, mass, -(relative & normal), stiffness, damping
+    );
+    const vector sliding(-(relative - (relative & normal)*normal));
+    const vector Ft
+    (
+        tangentialForce(law, key, sliding, normal, Fn, stiffness, damping, h)
+    );
+
+    const vector F(-Fn*normal + Ft);
+    force_[i] += F;
+    torque_[i] += ri ^ F;
+    if (j >= 0)
+    {
+        force_[j] -= F;
+        torque_[j] -= rj ^ F;
+    }
+
+    // A contact that began within this sub-step, a fraction s of it ago:
+    // its damping force (not zero at first touch) acts for s h, not the
+    // h/2 of the closing half-kick
+    const scalar approach = -(relative & normal);
+    if (h > 0 && approach > 0 && depth < approach*h && Fn > 0)
+    {
+        const scalar s = depth/(approach*h);
+        const vector correction
+        (
+            -(2*s - 1)*min(damping*approach, Fn)*normal
+        );
+        onsetForce_[i] += correction;
+        if (j >= 0)
+        {
+            onsetForce_[j] -= correction;
+        }
+    }
+
+    if (stiffness > 0)
+    {
+        activeStep_ = min
+        (
+            activeStep_,
+            pi*sqrt(mass/stiffness)/stepsPerContact_
+        );
+    }
+    ++nActive_;
+}
+
+
+void Foam::particleContact::applyLubrication
+(
+    const label i,
+    const label j,
+    const scalar gap,
+    const point& location,
+    const vector& normal
+)
+{
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    const scalar Ri = particles[i].shape().boundingRadius();
+
+    vector relative(-velocity_[i]);
+    scalar invMass = inverseMass(i);
+    scalar radius = Ri;
+    if (j >= 0)
+    {
+        const scalar Rj = particles[j].shape().boundingRadius();
+        relative += velocity_[j];
+        invMass += inverseMass(j);
+        radius = Ri*Rj/(Ri + Rj);
+    }
+    const scalar h = max(gap, roughness_*radius);
+    if (h >= lubricationRange_)
+    {
+        return;
+    }
+
+    // Resistance coefficient of the unresolved part of the film
+    const scalar mu = lubricationViscosity_;
+    const scalar resistance =
+        cloud_.twoD()
+      ? 0.75*pi*sqrt(2.0)*mu
+       *(pow(radius/h, 1.5) - pow(radius/lubricationRange_, 1.5))
+      : 6*pi*mu*sqr(radius)*(1/h - 1/lubricationRange_);
+
+    const vector F((resistance*(relative & normal))*normal);
+    force_[i] += F;
+    if (j >= 0)
+    {
+        force_[j] -= F;
+    }
+    activeStep_ = min(activeStep_, 0.5/(invMass*resistance));
+}
+
+
+void Foam::particleContact::evaluate(const scalar h)
+{
+    PtrList<dlmParticle>& particles = cloud_.particles();
+    ++evaluation_;
+    activeStep_ = GREAT;
+    nActive_ = 0;
+    force_ = Zero;
+    torque_ = Zero;
+    onsetForce_ = Zero;
+
+    // The overlap method reads the particles' positions
+    forAll(particles, i)
+    {
+        if (involved_[i])
+        {
+            particles[i].setPosition(position_[i]);
+            particles[i].setOrientation(orientation_[i]);
+        }
+    }
+
+    List<pairOverlap> overlaps;
+    overlap_->overlaps(pairs_, overlaps);
+    forAll(pairs_, k)
+    {
+        const pairOverlap& o = overlaps[k];
+        const label i = pairs_[k].first();
+        const label j = pairs_[k].second();
+        if (o.volume > 0)
+        {
+            applyContact
+            (
+                i, j, laws_[pairLaws_[k]], contactKey({i, j, 0}),
+                o.volume, o.depth, o.location, o.normal, h
+            );
+        }
+        if (lubricationViscosity_ > 0)
+        {
+            applyLubrication(i, j, -o.depth, o.location, o.normal);
+        }
+    }
+
+    DynamicList<wallContact> found;
+    forAll(wallCandidates_, k)
+    {
+        const label i = wallCandidates_[k][0];
+        const label w = wallCandidates_[k][1];
+        const particleShape& shape = particles[i].shape();
+        const scalar R = shape.boundingRadius();
+        found.clear();
+        walls_[w].contacts
+        (
+            position_[i],
+            R + (lubricationViscosity_ > 0 ? lubricationRange_ : 0),
+            wallFeatures_[k],
+            found
+        );
+        const tensor RT(orientation_[i].R().T());
+        for (const wallContact& c : found)
+        {
+            if (lubricationViscosity_ > 0)
+            {
+                applyLubrication(i, -1, c.distance - R, c.location, -c.normal);
+            }
+            if (c.distance >= R)
+            {
+                continue;
+            }
+            const scalar V = shape.planeOverlap(RT & -c.normal, c.distance);
+            if (V > 0)
+            {
+                applyContact
+                (
+                    i, -1, laws_[wallCandidates_[k][2]],
+                    contactKey({i, -1 - w, c.feature}),
+                    V, shape.boundingRadius() - c.distance, c.location,
+                    -c.normal, h
+                );
+            }
+        }
+    }
+
+    // Contacts that ended lose their history
+    DynamicList<contactKey> ended;
+    forAllConstIters(history_, iter)
+    {
+        if (iter().second() != evaluation_)
+        {
+            ended.append(iter.key());
+        }
+    }
+    for (const contactKey& key : ended)
+    {
+        history_.erase(key);
+    }
+
+    if (cloud_.twoD())
+    {
+        for (vector& F : force_)
+        {
+            F.z() = 0;
+        }
+        for (vector& T : torque_)
+        {
+            T = vector(0, 0, T.z());
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleContact::particleContact
+(
+    dlmParticleCloud& cloud,
+    const dictionary& dict,
+    const dictionary& state
+)
+:
+    cloud_(cloud),
+    dict_(dict),
+    stepsPerContact_(dict.getOrDefault<scalar>("stepsPerContact", 50)),
+    lubricationViscosity_(0),
+    lubricationRange_(cloud.cellSizeMax()),
+    roughness_(0.01),
+    overlap_(overlapMethod::New(dict, cloud)),
+    evaluation_(0),
+    activeStep_(GREAT),
+    nActive_(0)
+{
+    const wordHashSet known
+    ({
+        "active", "overlap", "stepsPerContact", "meshWalls", "pairs", "walls",
+        "lubrication"
+    });
+    for (const entry& e : dict)
+    {
+        if (!known.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << e.keyword() << "' in the contact"
+                << " settings. Known keywords: "
+                << flatOutput(known.sortedToc()) << exit(FatalIOError);
+        }
+    }
+    if (stepsPerContact_ < 4)
+    {
+        FatalIOErrorInFunction(dict)
+            << "stepsPerContact " << stepsPerContact_ << " must be at least 4"
+            << exit(FatalIOError);
+    }
+
+    const dictionary lubrication(dict.subOrEmptyDict("lubrication"));
+    const bool withFluid = cloud.rhoFluid().value() > 0;
+    if (lubrication.getOrDefault<bool>("active", withFluid))
+    {
+        if (!withFluid)
+        {
+            FatalIOErrorInFunction(lubrication)
+                << "Lubrication needs a fluid (this run has none)"
+                << exit(FatalIOError);
+        }
+        const dictionary& transport =
+            cloud.mesh().lookupObject<IOdictionary>("transportProperties");
+        lubricationViscosity_ =
+            cloud.rhoFluid().value()*transport.get<scalar>("nu");
+        lubricationRange_ =
+            lubrication.getOrDefault<scalar>("range", lubricationRange_);
+        roughness_ = lubrication.getOrDefault<scalar>("roughness", roughness_);
+        if (lubricationRange_ <= 0 || roughness_ <= 0)
+        {
+            FatalIOErrorInFunction(lubrication)
+                << "lubrication range and roughness must be positive"
+                << exit(FatalIOError);
+        }
+        Info<< "Lubrication below gaps of " << lubricationRange_
+            << " m, smallest gap " << roughness_ << " R*" << endl;
+    }
+
+    const PtrList<dlmParticle>& particles = cloud.particles();
+    particleMaterial_.setSize(particles.size());
+    forAll(particles, i)
+    {
+        particleMaterial_[i] = materialIndex(particles[i].material());
+    }
+
+    if (dict.getOrDefault<bool>("meshWalls", true))
+    {
+        dictionary meshWalls;
+        meshWalls.name() = dict.name() + ".meshWalls";
+        meshWalls.add("type", "patches");
+        walls_.append(contactWall::New(meshWalls, cloud.mesh()));
+    }
+    if (dict.found("walls"))
+    {
+        for (const entry& e : dict.subDict("walls"))
+        {
+            walls_.append(contactWall::New(e.dict(), cloud.mesh()));
+        }
+    }
+    wallMaterial_.setSize(walls_.size());
+    forAll(walls_, w)
+    {
+        wallMaterial_[w] = materialIndex(walls_[w].material());
+    }
+
+    readLaws();
+
+    // Tangential history of a restarted run
+    if (state.found("contacts"))
+    {
+        const List<Tuple2<contactKey, vector>> saved
+        (
+            state.get<List<Tuple2<contactKey, vector>>>("contacts")
+        );
+        for (const auto& entry : saved)
+        {
+            history_.set
+            (
+                entry.first(),
+                Tuple2<vector, label>(entry.second(), evaluation_)
+            );
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::particleContact::evolve
+(
+    const scalar deltaT,
+    const vectorField& accel,
+    const vectorField& angularAccel
+)
+{
+    PtrList<dlmParticle>& particles = cloud_.particles();
+    const label n = particles.size();
+
+    findCandidates(deltaT, accel);
+
+    // Step state of the particles that may touch something, from the
+    // start of the step
+    position_.setSize(n);
+    velocity_.setSize(n);
+    omega_.setSize(n);
+    orientation_.setSize(n);
+    force_.setSize(n);
+    torque_.setSize(n);
+    onsetForce_.setSize(n);
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        position_[i] = p.position();
+        velocity_[i] = p.velocity0();
+        omega_[i] = p.angularVelocity0();
+        orientation_[i] = p.orientation();
+        if (p.motion() == dlmParticle::motionType::prescribed)
+        {
+            velocity_[i] = p.velocity();
+            omega_[i] = p.angularVelocity();
+        }
+    }
+
+    vectorField impulse(n, Zero);
+    vectorField angularImpulse(n, Zero);
+    vectorField halfVelocity(n, Zero);
+    vectorField halfOmega(n, Zero);
+
+    const scalar hImpact = impactStep(deltaT, accel);
+    evaluate(0);
+
+    scalar t = 0;
+    label nSub = 0;
+    scalar hMin = deltaT;
+    label maxActive = nActive_;
+    while (t < deltaT*(1 - 1e-12))
+    {
+        const scalar h = min(deltaT - t, min(hImpact, activeStep_));
+        hMin = min(hMin, h);
+
+        const vectorField force0(force_);
+        const vectorField torque0(torque_);
+        forAll(particles, i)
+        {
+            if (!involved_[i])
+            {
+                continue;
+            }
+            const dlmParticle& p = particles[i];
+            if (p.isFree())
+            {
+                const vector dv
+                (
+                    0.5*h*(accel[i] + inverseMass(i)*force_[i])
+                );
+                const vector domega
+                (
+                    0.5*h
+                   *(
+                        angularAccel[i]
+                      + (inverseInertia(i, orientation_[i]) & torque_[i])
+                    )
+                );
+                halfVelocity[i] = velocity_[i] + dv;
+                halfOmega[i] = omega_[i] + domega;
+                // Forces at the end of the sub-step see the velocities
+                // predicted there (second order with damping)
+                velocity_[i] = halfVelocity[i] + dv;
+                omega_[i] = halfOmega[i] + domega;
+            }
+            else
+            {
+                halfVelocity[i] = velocity_[i];
+                halfOmega[i] = omega_[i];
+            }
+            if (p.motion() != dlmParticle::motionType::fixed)
+            {
+                position_[i] += h*halfVelocity[i];
+                const scalar angle = mag(halfOmega[i])*h;
+                if (angle > VSMALL)
+                {
+                    orientation_[i] =
+                        quaternion(halfOmega[i]/mag(halfOmega[i]), angle)
+                       *orientation_[i];
+                    orientation_[i].normalize();
+                }
+            }
+        }
+
+        evaluate(h);
+        maxActive = max(maxActive, nActive_);
+
+        forAll(particles, i)
+        {
+            if (!involved_[i] || !particles[i].isFree())
+            {
+                continue;
+            }
+            velocity_[i] =
+                halfVelocity[i]
+              + 0.5*h*(accel[i] + inverseMass(i)*(force_[i] + onsetForce_[i]));
+            omega_[i] =
+                halfOmega[i]
+              + 0.5*h
+               *(
+                    angularAccel[i]
+                  + (inverseInertia(i, orientation_[i]) & torque_[i])
+                );
+            impulse[i] += 0.5*h*(force0[i] + force_[i] + onsetForce_[i]);
+            angularImpulse[i] += 0.5*h*(torque0[i] + torque_[i]);
+        }
+
+        t += h;
+        ++nSub;
+    }
+
+    forAll(particles, i)
+    {
+        dlmParticle& p = particles[i];
+        if (!involved_[i])
+        {
+            p.move(deltaT);
+            p.setContactLoads(Zero, Zero);
+        }
+        else if (p.motion() != dlmParticle::motionType::fixed)
+        {
+            p.setMotion(position_[i], velocity_[i], omega_[i], orientation_[i]);
+            p.setContactLoads(impulse[i]/deltaT, angularImpulse[i]/deltaT);
+        }
+    }
+
+    Info<< "Contacts: " << pairs_.size() << " particle pairs and "
+        << wallCandidates_.size() << " particle-wall candidates, up to "
+        << maxActive << " touching; " << nSub << " sub-steps, smallest "
+        << hMin << " s" << endl;
+}
+
+
+void Foam::particleContact::write(Ostream& os) const
+{
+    List<Tuple2<contactKey, vector>> saved(history_.size());
+    label k = 0;
+    for (const contactKey& key : history_.sortedToc())
+    {
+        saved[k++] = Tuple2<contactKey, vector>(key, history_[key].first());
+    }
+    os.writeEntry("contacts", saved);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,272 @@
+"""Case-level tests of the contacts: restitution of dry collisions between
+spheres, with walls and between disks, friction that makes a spinning sphere
+roll and a sphere roll down a slope without slipping, restart in the middle
+of a contact, and the same contact forces on 1 and 2 processors."""
+
+import math
+import pathlib
+import shutil
+
+import numpy as np
+import pytest
+
+from foamcase import Case
+
+HERE = pathlib.Path(__file__).parent
+DRY_BOX = HERE / "cases" / "dryBox"
+PAIRS = "contact/pairs"
+
+# The dry box as a one-cell-thick 2D mesh
+DISK_BOX = """FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+vertices
+(
+    (-0.01 -0.01 0) (0.01 -0.01 0) (0.01 0.01 0) (-0.01 0.01 0)
+    (-0.01 -0.01 0.001) (0.01 -0.01 0.001) (0.01 0.01 0.001) (-0.01 0.01 0.001)
+);
+blocks ( hex (0 1 2 3 4 5 6 7) (4 4 1) simpleGrading (1 1 1) );
+boundary
+(
+    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
+);
+"""
+
+
+def dry_case(tmp_path, env, name, settings=None, remove=()):
+    case = Case.copy(DRY_BOX, tmp_path / name, env)
+    case.run("blockMesh")
+    for entry in remove:
+        case.run("foamDictionary", "constant/particleProperties", "-entry",
+                 entry, "-remove", log="foamDictionary")
+    for (file, entry), value in (settings or {}).items():
+        case.set(file, entry, value)
+    return case
+
+
+def both_pairs(entry, value):
+    return {("constant/particleProperties", f"{PAIRS}/{pair}/{entry}"): value
+            for pair in ("particleParticle", "particleWall")}
+
+
+@pytest.mark.parametrize("law", ["overlapVolume", "linearSpringDashpot"])
+@pytest.mark.parametrize("e", [0.1, 0.5, 0.9])
+def test_head_on_collision_has_the_requested_restitution(tmp_path, foam_env, law, e):
+    settings = {**both_pairs("restitution", e), **both_pairs("law", law)}
+    case = dry_case(tmp_path, foam_env, "headOn", settings)
+    if law == "linearSpringDashpot":
+        for pair in ("particleParticle", "particleWall"):
+            case.run("foamDictionary", "constant/particleProperties", "-entry",
+                     f"{PAIRS}/{pair}/impactVelocity", "-remove",
+                     log="foamDictionary")
+    case.run("dlmDEMFoam")
+    h = case.history()
+    left, right = h["left"], h["right"]
+    approach = right[0, 4] - left[0, 4]
+    separation = right[-1, 4] - left[-1, 4]
+    assert -separation/approach == pytest.approx(e, rel=0.01)
+    # Momentum conserved to round-off, no motion off the line of centres
+    assert np.abs(left[:, 4:7] + right[:, 4:7]).max() < 1e-12
+    assert np.abs(left[:, 5:10]).max() < 1e-12
+
+
+@pytest.mark.parametrize("e", [0.3, 0.9])
+def test_sphere_bounces_off_a_wall_with_the_requested_restitution(tmp_path, foam_env, e):
+    sphere = "constant/particleProperties", "particles/left"
+    case = dry_case(tmp_path, foam_env, "wall", {
+        **both_pairs("restitution", e),
+        (sphere[0], f"{sphere[1]}/position"): "(0 0 0.0025)",
+        (sphere[0], f"{sphere[1]}/velocity"): "(0 0 -1)",
+    }, remove=["particles/right"])
+    case.run("dlmDEMFoam")
+    h = case.history()["left"]
+    assert h[-1, 6] == pytest.approx(e, rel=0.01)
+    # It never went through the floor: deepest overlap under 5 % of R
+    assert h[:, 3].min() > 0.002*0.95
+
+
+def tilted_gravity(angle_deg):
+    a = math.radians(angle_deg)
+    return f"({9.81*math.sin(a)} 0 {-9.81*math.cos(a)})"
+
+
+@pytest.mark.parametrize("tangential", ["spring", "coulomb"])
+def test_spinning_sphere_ends_up_rolling(tmp_path, foam_env, tangential):
+    """A sphere spinning at omega0 about y set on the floor: friction turns it
+    into rolling at v = 2/7 omega0 R (angular momentum about the contact
+    point is conserved), whatever the friction model."""
+    sphere = "constant/particleProperties", "particles/left"
+    R, omega0 = 0.002, 50.0
+    case = dry_case(tmp_path, foam_env, "spin", {
+        **both_pairs("tangential", tangential),
+        ("constant/g", "value"): "(0 0 -9.81)",
+        ("system/controlDict", "endTime"): 0.1,
+        ("system/controlDict", "deltaT"): 5e-4,
+        ("system/controlDict", "writeInterval"): 1000,
+        (sphere[0], f"{sphere[1]}/position"): f"(-0.005 0 {R*(1 - 1e-4)})",
+        (sphere[0], f"{sphere[1]}/velocity"): "(0 0 0)",
+        (sphere[0], f"{sphere[1]}/angularVelocity"): f"(0 {omega0} 0)",
+    }, remove=["particles/right"])
+    case.run("dlmDEMFoam")
+    h = case.history()["left"]
+    assert h[-1, 4] == pytest.approx(2/7*omega0*R, rel=0.01)
+    # Rolling: the contact point is at rest
+    assert h[-1, 4] - h[-1, 8]*R == pytest.approx(0, abs=1e-3*h[-1, 4])
+
+
+def test_sphere_rolls_down_a_slope_without_slipping(tmp_path, foam_env):
+    """On a 20 degree slope with friction 0.3 (> 2/7 tan 20) the static
+    friction spring holds the contact point: acceleration 5/7 g sin 20."""
+    sphere = "constant/particleProperties", "particles/left"
+    R = 0.002
+    case = dry_case(tmp_path, foam_env, "slope", {
+        ("constant/g", "value"): tilted_gravity(20),
+        ("system/controlDict", "endTime"): 0.02,
+        ("system/controlDict", "deltaT"): 5e-4,
+        ("system/controlDict", "writeInterval"): 1000,
+        (sphere[0], f"{sphere[1]}/position"): f"(-0.008 0 {R*(1 - 1e-4)})",
+        (sphere[0], f"{sphere[1]}/velocity"): "(0 0 0)",
+    }, remove=["particles/right"])
+    case.run("dlmDEMFoam")
+    h = case.history()["left"]
+    late = h[h[:, 0] > 0.01]
+    a = np.polyfit(late[:, 0], late[:, 4], 1)[0]
+    assert a == pytest.approx(5/7*9.81*math.sin(math.radians(20)), rel=0.01)
+    assert np.abs(late[:, 4] - late[:, 8]*R).max() < 1e-3*late[-1, 4]
+
+
+def test_disks_collide_with_the_requested_restitution(tmp_path, foam_env):
+    """2D: disks on a one-cell-thick mesh, head on (disk lens) and against
+    the side wall (segment)."""
+    case = Case.copy(DRY_BOX, tmp_path / "disks", foam_env)
+    (case.path / "system/blockMeshDict").write_text(DISK_BOX)
+    case.run("blockMesh")
+    for (file, entry), value in both_pairs("restitution", 0.7).items():
+        case.set(file, entry, value)
+    for name in ("left", "right"):
+        case.set("constant/particleProperties", f"particles/{name}/shape", "disk")
+    case.set("system/controlDict", "endTime", 0.025)
+    case.run("dlmDEMFoam")
+    h = case.history()
+    left, right = h["left"], h["right"]
+    # After the pair collision the disks part at 0.7 m/s; each then meets a
+    # side wall and comes back at 0.7 times its 0.35 m/s
+    rel = right[:, 4] - left[:, 4]
+    assert rel[left[:, 0] < 0.01][-1] == pytest.approx(0.7, rel=0.01)
+    assert left[-1, 4] == pytest.approx(0.7*0.35, rel=0.01)
+    assert right[-1, 4] == pytest.approx(-0.7*0.35, rel=0.01)
+
+
+def test_restart_within_a_contact_continues_the_trajectory(tmp_path, foam_env):
+    """Stop and restart while the sphere is pressed on the floor by a
+    spinning start: the tangential spring is saved and read back."""
+    sphere = "constant/particleProperties", "particles/left"
+    settings = {
+        ("constant/g", "value"): "(0 0 -9.81)",
+        ("system/controlDict", "endTime"): 0.01,
+        ("system/controlDict", "deltaT"): 5e-4,
+        ("system/controlDict", "writeInterval"): 10,
+        (sphere[0], f"{sphere[1]}/position"): "(-0.005 0 0.0019998)",
+        (sphere[0], f"{sphere[1]}/velocity"): "(0 0 0)",
+        (sphere[0], f"{sphere[1]}/angularVelocity"): "(0 50 0)",
+    }
+    full = dry_case(tmp_path, foam_env, "full", settings, ["particles/right"])
+    full.run("dlmDEMFoam")
+    state = (full.path / "0.005" / "uniform" / "particles").read_text()
+    assert "contacts" in state and "(0 -1 " in state
+
+    restarted = dry_case(tmp_path, foam_env, "restarted", settings,
+                         ["particles/right"])
+    shutil.copytree(full.path / "0.005", restarted.path / "0.005")
+    restarted.run("dlmDEMFoam")
+    a = full.history()["left"]
+    b = restarted.history("0.005")["left"]
+    tail = a[a[:, 0] > 0.005 + 1e-9]
+    assert len(b) == len(tail) == 10
+    assert np.abs(b[:, 1:] - tail[:, 1:]).max() < 1e-12*np.abs(tail[:, 1:]).max()
+
+
+WET_CONTACT = """
+contact
+{
+    pairs
+    {
+        sphereWall
+        {
+            materials       (particle wall);
+            law             overlapVolume;
+            contactTime     2e-3;
+            impactVelocity  0.05;
+            restitution     0.5;
+            friction        0.3;
+        }
+    }
+}
+"""
+
+
+def landing_case(tmp_path, env, name):
+    """The 10 mm sphere of density 2000 in the 30 x 30 x 45 mm box of a
+    fluid 100 times as viscous as water, 2 mm above the floor, with
+    contacts."""
+    case = Case.copy(HERE / "cases" / "sphereBox", tmp_path / name, env)
+    case.run("blockMesh")
+    props = case.path / "constant/particleProperties"
+    props.write_text(props.read_text() + WET_CONTACT)
+    case.set("constant/particleProperties", "particles/sphere/position",
+             "(0.0151 0.0149 0.007)")
+    case.set("constant/transportProperties", "nu", 1e-4)
+    case.set("system/controlDict", "endTime", 0.3)
+    case.set("system/controlDict", "writeInterval", 30)
+    return case
+
+
+def test_settling_sphere_lands_and_comes_to_rest(tmp_path, foam_env):
+    """It reaches the floor, slowed by the lubrication film, does not bounce
+    (Stokes number far below 10) and comes to rest on it with an overlap of
+    a small fraction of the radius. At rest the floor and the fluid together
+    carry the weight: contact force plus hydrodynamic force (which includes
+    the buoyancy) equal rho_s V g. How the two share the load beyond
+    the buoyancy is not determined at rest on this mesh (the film below
+    the sphere is sealed): the contact carries part of it."""
+    case = landing_case(tmp_path, foam_env, "landing")
+    case.run("pimpleDLMFoam")
+    h = case.history()["sphere"]
+    R = 0.005
+    V = 4/3*math.pi*R**3
+    gap = h[:, 3] - R
+    assert gap.min() > -0.01*R
+    speed = np.abs(h[:, 6]).max()
+    assert h[:, 6].max() < 1e-3*speed
+    late = h[h[:, 0] > 0.2]
+    assert np.abs(late[:, 6]).max() < 1e-4*speed
+    # Off centre in the box it may roll slowly, held back by the fluid only
+    assert np.abs(late[:, 4:6]).max() < 0.01*speed
+    assert late[-1, 18] > 0.2*1000*V*9.81
+    assert late[-1, 12] + late[-1, 18] == pytest.approx(2000*V*9.81, rel=0.01)
+
+
+def test_contact_forces_are_the_same_on_one_and_two_processors(tmp_path, foam_env):
+    """The landing decomposed on 2 ranks: same trajectory and the same contact
+    force (not twice it, a bug of some codes that sum forces over ranks)."""
+    def make(name):
+        case = landing_case(tmp_path, foam_env, name)
+        for field in ["p_rgh", "p_rghFinal"]:
+            case.set("system/fvSolution", f"solvers/{field}/tolerance", 1e-13)
+            case.set("system/fvSolution", f"solvers/{field}/relTol", 0)
+        case.set("system/fvSolution", "solvers/U/tolerance", 1e-14)
+        case.set("system/controlDict", "endTime", 0.1)
+        return case
+
+    serial = make("serial")
+    serial.run("pimpleDLMFoam")
+    parallel = make("parallel")
+    parallel.run("decomposePar")
+    parallel.run("pimpleDLMFoam", np=2)
+
+    s = serial.history()["sphere"]
+    p = parallel.history()["sphere"]
+    assert s.shape == p.shape
+    assert np.abs(s[:, 18]).max() > 0
+    for columns in [slice(1, 4), slice(4, 7), slice(16, 19)]:
+        scale = np.abs(s[:, columns] - s[0, columns]).max()
+        assert np.abs(p[:, columns] - s[:, columns]).max() < 1e-6*scale
