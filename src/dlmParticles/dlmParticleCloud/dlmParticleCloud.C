@@ -413,6 +413,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     (
         properties_.getOrDefault<scalar>("surfaceResolution", 32)
     ),
+    historyInterval_(properties_.getOrDefault<label>("historyInterval", 1)),
     cellSizeMax_(gMax(mag(mesh.delta()().primitiveField()))),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
@@ -463,7 +464,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     const wordHashSet known
     ({
         "surfaceResolution", "particles", "particleFile",
-        "particleFileDefaults", "contact", "FoamFile"
+        "particleFileDefaults", "contact", "historyInterval", "FoamFile"
     });
     for (const entry& e : properties_)
     {
@@ -473,6 +474,12 @@ Foam::dlmParticleCloud::dlmParticleCloud
                 << "Unknown keyword '" << e.keyword() << "'. Known keywords: "
                 << flatOutput(known.sortedToc()) << exit(FatalIOError);
         }
+    }
+    if (historyInterval_ < 0)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "historyInterval " << historyInterval_ << " must not be"
+            << " negative" << exit(FatalIOError);
     }
     if (surfaceResolution_ < 1)
     {
@@ -622,7 +629,11 @@ void Foam::dlmParticleCloud::move()
 
 void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
 {
-    if (Pstream::master())
+    const bool historyStep =
+        historyInterval_ > 0
+     && mesh_.time().timeIndex() % historyInterval_ == 0;
+
+    if (historyStep && Pstream::master())
     {
         if (!historyFile_.valid())
         {

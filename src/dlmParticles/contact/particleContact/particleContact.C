@@ -312,6 +312,22 @@ void Foam::particleContact::findCandidates
         }
     }
 
+    // The springs of the candidate pairs move from the table to an array
+    // for the step
+    pairSpring_.setSize(pairs_.size());
+    pairActive_.setSize(pairs_.size());
+    forAll(pairs_, k)
+    {
+        const contactKey key({pairs_[k].first(), pairs_[k].second(), 0});
+        auto iter = history_.find(key);
+        pairActive_[k] = iter.found();
+        pairSpring_[k] = iter.found() ? iter().first() : vector(Zero);
+        if (iter.found())
+        {
+            history_.erase(iter);
+        }
+    }
+
     overlap_->prepare(pairs_);
 }
 
@@ -372,7 +388,7 @@ Foam::scalar Foam::particleContact::impactStep
 Foam::vector Foam::particleContact::tangentialForce
 (
     const contactLaw& law,
-    const contactKey& key,
+    vector* spring,
     const vector& sliding,
     const vector& normal,
     const scalar normalForce,
@@ -392,14 +408,7 @@ Foam::vector Foam::particleContact::tangentialForce
     }
 
     // Spring on the sliding displacement, kept in the tangent plane
-    auto iter = history_.find(key);
-    if (!iter.found())
-    {
-        history_.insert(key, Tuple2<vector, label>(Zero, evaluation_));
-        iter = history_.find(key);
-    }
-    vector& xi = iter().first();
-    iter().second() = evaluation_;
+    vector& xi = *spring;
 
     const scalar magXi = mag(xi);
     xi -= (xi & normal)*normal;
@@ -423,12 +432,25 @@ Foam::vector Foam::particleContact::tangentialForce
 }
 
 
+Foam::vector& Foam::particleContact::wallSpring(const contactKey& key)
+{
+    auto iter = history_.find(key);
+    if (!iter.found())
+    {
+        history_.insert(key, Tuple2<vector, label>(Zero, evaluation_));
+        iter = history_.find(key);
+    }
+    iter().second() = evaluation_;
+    return iter().first();
+}
+
+
 void Foam::particleContact::applyContact
 (
     const label i,
     const label j,
     const contactLaw& law,
-    const contactKey& key,
+    vector* spring,
     const scalar V,
     const scalar depth,
     const point& location,
@@ -463,7 +485,7 @@ void Foam::particleContact::applyContact
     const vector sliding(-(relative - (relative & normal)*normal));
     const vector Ft
     (
-        tangentialForce(law, key, sliding, normal, Fn, stiffness, damping, h)
+        tangentialForce(law, spring, sliding, normal, Fn, stiffness, damping, h)
     );
 
     const vector F(-Fn*normal + Ft);
@@ -578,13 +600,21 @@ void Foam::particleContact::evaluate(const scalar h)
         const pairOverlap& o = overlaps[k];
         const label i = pairs_[k].first();
         const label j = pairs_[k].second();
-        if (o.volume > 0)
+        const contactLaw& law = laws_[pairLaws_[k]];
+        pairActive_[k] = o.volume > 0;
+        if (pairActive_[k])
         {
             applyContact
             (
-                i, j, laws_[pairLaws_[k]], contactKey({i, j, 0}),
+                i, j, law,
+                law.tangential() == contactLaw::tangentialType::spring
+              ? &pairSpring_[k] : nullptr,
                 o.volume, o.depth, o.location, o.normal, h
             );
+        }
+        else
+        {
+            pairSpring_[k] = Zero;
         }
         if (lubricationViscosity_ > 0)
         {
@@ -621,18 +651,19 @@ void Foam::particleContact::evaluate(const scalar h)
             const scalar V = shape.planeOverlap(RT & -c.normal, c.distance);
             if (V > 0)
             {
+                const contactLaw& law = laws_[wallCandidates_[k][2]];
                 applyContact
                 (
-                    i, -1, laws_[wallCandidates_[k][2]],
-                    contactKey({i, -1 - w, c.feature}),
-                    V, shape.boundingRadius() - c.distance, c.location,
-                    -c.normal, h
+                    i, -1, law,
+                    law.tangential() == contactLaw::tangentialType::spring
+                  ? &wallSpring(contactKey({i, -1 - w, c.feature})) : nullptr,
+                    V, R - c.distance, c.location, -c.normal, h
                 );
             }
         }
     }
 
-    // Contacts that ended lose their history
+    // Wall contacts that ended lose their history
     DynamicList<contactKey> ended;
     forAllConstIters(history_, iter)
     {
@@ -919,6 +950,23 @@ void Foam::particleContact::evolve
         {
             p.setMotion(position_[i], velocity_[i], omega_[i], orientation_[i]);
             p.setContactLoads(impulse[i]/deltaT, angularImpulse[i]/deltaT);
+        }
+    }
+
+    forAll(pairs_, k)
+    {
+        if
+        (
+            pairActive_[k]
+         && laws_[pairLaws_[k]].tangential()
+         == contactLaw::tangentialType::spring
+        )
+        {
+            history_.set
+            (
+                contactKey({pairs_[k].first(), pairs_[k].second(), 0}),
+                Tuple2<vector, label>(pairSpring_[k], evaluation_)
+            );
         }
     }
 

@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Cost of the contacts: dry simple-cubic stacks of 10^3, 10^4 and 10^5
+spheres (d = 4 mm, 2500 kg/m^3) pressed slightly together (every sphere has
+its 6 neighbours in contact) in a walled box under gravity, run by
+dlmDEMFoam for a few fluid steps with the overlap-volume law and static
+friction. Reports the CPU time per particle per contact sub-step (search,
+forces and motion), which should stay within 1.5 times across the range
+(O(N) search), and the particle-sub-steps per second. A benchmark, not a
+test: prints and writes results/benchmark_contact.csv.
+
+    validation/benchmark_contact.py [--sizes 10,22,46] [--steps 10]
+                                    (spheres per box side)
+"""
+
+import argparse
+import re
+
+import numpy as np
+
+from common import Case, RESULTS, ROOT, RUNS, foam_environment, write_table
+
+D = 0.004
+SPACING = D*(1 - 2e-3)          # every neighbour overlaps by 0.2 % of d
+
+HEADER = "FoamFile {{ version 2.0; format ascii; class {cls}; object {obj}; }}\n"
+
+
+def write(path, cls, obj, body):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(HEADER.format(cls=cls, obj=obj) + body)
+
+
+def make_case(n, steps, env):
+    case = Case.copy(ROOT / "tests" / "cases" / "dryBox", RUNS / f"benchmarkContact_{n}", env)
+    L = n*SPACING + 0.2*D
+    write(case.path / "system/blockMeshDict", "dictionary", "blockMeshDict", f"""
+vertices ((0 0 0) ({L} 0 0) ({L} {L} 0) (0 {L} 0) (0 0 {L}) ({L} 0 {L}) ({L} {L} {L}) (0 {L} {L}));
+blocks (hex (0 1 2 3 4 5 6 7) (4 4 4) simpleGrading (1 1 1));
+boundary ( walls {{ type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }} );
+""")
+    rng = np.random.default_rng(1)
+    index = np.arange(n)
+    x, y, z = np.meshgrid(index, index, index, indexing="ij")
+    centres = (np.stack([x, y, z], axis=-1).reshape(-1, 3) + 0.5)*SPACING + 0.1*D \
+        + rng.uniform(-1e-4*D, 1e-4*D, (n**3, 3))
+    centres[:, 2] -= 0.1*D - 0.5*D*2e-3         # bottom layer on the floor
+    np.savetxt(case.path / "constant/packing.dat",
+               np.column_stack([centres, np.full(n**3, D/2)]), fmt="%.9e")
+    write(case.path / "constant/particleProperties", "dictionary", "particleProperties", """
+historyInterval 0;
+particleFile "constant/packing.dat";
+particleFileDefaults { shape sphere; density 2500; }
+contact
+{
+    pairs
+    {
+        particles { materials (particle particle); law overlapVolume;
+                    contactTime 1e-4; impactVelocity 1; restitution 0.5; friction 0.3; }
+        walls     { materials (particle wall); law overlapVolume;
+                    contactTime 1e-4; impactVelocity 1; restitution 0.5; friction 0.3; }
+    }
+}
+""")
+    write(case.path / "constant/g", "uniformDimensionedVectorField", "g",
+          "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n")
+    case.run("blockMesh")
+    case.set("system/controlDict", "deltaT", 1e-4)
+    case.set("system/controlDict", "endTime", steps*1e-4)
+    case.set("system/controlDict", "writeInterval", 100000)
+    return case
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--sizes", default="10,22,46")
+    parser.add_argument("--steps", type=int, default=10)
+    args = parser.parse_args()
+
+    env = foam_environment()
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    rows = []
+    for n in [int(s) for s in args.sizes.split(",")]:
+        case = make_case(n, args.steps, env)
+        case.run("dlmDEMFoam")
+        log = (case.path / "log.dlmDEMFoam").read_text()
+        contacts = [line for line in log.splitlines() if line.startswith("Contacts:")]
+        sub_steps = sum(int(re.search(r"; (\d+) sub-steps", c).group(1)) for c in contacts)
+        pairs = int(re.search(r"Contacts: (\d+) particle pairs", contacts[-1]).group(1))
+        touching = int(re.search(r"up to (\d+) touching", contacts[-1]).group(1))
+        cpu = float(re.findall(r"ExecutionTime = ([0-9.e+-]+) s", log)[-1])
+        start = float(re.findall(r"ExecutionTime = ([0-9.e+-]+) s", log)[0])
+        per_step = (cpu - start)/max(sub_steps - sub_steps/len(contacts), 1)
+        N = n**3
+        rows.append([N, pairs, touching, sub_steps, cpu, per_step/N*1e6, N/per_step])
+        print(f"{N:7d} spheres: {pairs} candidate pairs, {touching} contacts, "
+              f"{sub_steps} sub-steps, CPU {cpu:.1f} s; "
+              f"{per_step/N*1e6:.3f} us per particle-sub-step "
+              f"({N/per_step:.3g} particle-sub-steps/s)", flush=True)
+    base = rows[0][5]
+    for r in rows:
+        print(f"{r[0]:7d}: cost per particle {r[5]/base:.2f} x that of {rows[0][0]}")
+    write_table(RESULTS / "benchmark_contact.csv",
+                ["particles", "candidatePairs", "contacts", "subSteps", "cpuTime_s",
+                 "us_per_particle_subStep", "particleSubSteps_per_s"], rows)
+
+
+if __name__ == "__main__":
+    main()
