@@ -277,6 +277,32 @@ def test_settling_sphere_lands_and_comes_to_rest(tmp_path, foam_env):
     assert late[-1, 12] + late[-1, 18] == pytest.approx(2000*V*9.81, rel=0.01)
 
 
+@pytest.mark.xfail(strict=True, reason=(
+    "known defect: at rest the sieve carries 0.90 of the reduced weight; the "
+    "rest leaks through the forcing of the interface cells into the fluid's "
+    "pressure (see issue 4)"))
+def test_sphere_rests_on_a_sieve_the_fluid_passes(tmp_path, foam_env):
+    """A contact-only plane across the box at z = 15 mm (a sieve: the fluid
+    passes through, no lubrication): the sphere lands on it and, at rest,
+    the sieve carries its weight less buoyancy alone."""
+    case = landing_case(tmp_path, foam_env, "sieve")
+    props = case.path / "constant/particleProperties"
+    props.write_text(props.read_text().replace(
+        "contact\n{\n",
+        "contact\n{\n    walls { sieve { type plane; point (0 0 0.015);"
+        " normal (0 0 1); } }\n", 1))
+    case.set("constant/particleProperties", "particles/sphere/position",
+             "(0.0151 0.0149 0.0215)")
+    case.run("pimpleDLMFoam")
+    h = case.history()["sphere"]
+    R = 0.005
+    V = 4/3*math.pi*R**3
+    assert h[:, 3].min() > 0.015 + 0.99*R
+    late = h[h[:, 0] > 0.25]
+    assert np.abs(late[:, 6]).max() < 1e-4*np.abs(h[:, 6]).max()
+    assert late[-1, 18] == pytest.approx(1000*V*9.81, rel=0.01)
+
+
 def test_contact_forces_are_the_same_on_one_and_two_processors(tmp_path, foam_env):
     """The landing decomposed on 2 ranks: same trajectory and the same contact
     force (not twice it, a bug of some codes that sum forces over ranks)."""

@@ -633,14 +633,19 @@ void Foam::particleContact::evaluate(const scalar h)
         walls_[w].contacts
         (
             position_[i],
-            R + (lubricationViscosity_ > 0 ? lubricationRange_ : 0),
+            R
+          + (
+                lubricationViscosity_ > 0 && walls_[w].lubricated()
+              ? lubricationRange_
+              : 0
+            ),
             wallFeatures_[k],
             found
         );
         const tensor RT(orientation_[i].R().T());
         for (const wallContact& c : found)
         {
-            if (lubricationViscosity_ > 0)
+            if (lubricationViscosity_ > 0 && walls_[w].lubricated())
             {
                 applyLubrication(i, -1, c.distance - R, c.location, -c.normal);
             }

@@ -19,10 +19,11 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::contactWall::contactWall(const dictionary& dict)
+Foam::contactWall::contactWall(const dictionary& dict, const bool meshWall)
 :
     name_(dict.dictName()),
-    material_(dict.getOrDefault<word>("material", "wall"))
+    material_(dict.getOrDefault<word>("material", "wall")),
+    lubricated_(dict.getOrDefault<bool>("lubrication", meshWall))
 {}
 
 
@@ -72,7 +73,7 @@ Foam::autoPtr<Foam::contactWall> Foam::contactWall::New
 
 Foam::wordList Foam::contactWall::keywords() const
 {
-    return wordList({"type", "material"});
+    return wordList({"type", "material", "lubrication"});
 }
 
 

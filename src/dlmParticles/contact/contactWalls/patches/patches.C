@@ -34,7 +34,7 @@ Foam::contactWalls::patches::patches
     const polyMesh& mesh
 )
 :
-    surface(dict)
+    surface(dict, true)
 {
     const polyBoundaryMesh& bm = mesh.boundaryMesh();
 
@@ -155,7 +155,7 @@ Foam::contactWalls::patches::patches
 
 Foam::wordList Foam::contactWalls::patches::keywords() const
 {
-    return wordList({"type", "material", "patches"});
+    return wordList({"type", "material", "lubrication", "patches"});
 }
 
 

@@ -135,9 +135,13 @@ Foam::contactWalls::surface::surface
 }
 
 
-Foam::contactWalls::surface::surface(const dictionary& dict)
+Foam::contactWalls::surface::surface
+(
+    const dictionary& dict,
+    const bool meshWall
+)
 :
-    contactWall(dict)
+    contactWall(dict, meshWall)
 {}
 
 
