@@ -19,41 +19,6 @@ namespace contactWalls
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::contactWalls::cone::nearest
-(
-    const point& X,
-    point& location,
-    vector& normal,
-    scalar& distance
-) const
-{
-    // In the plane through the axis and X: axial a, radial rho; the
-    // surface's generator runs from (0, radius1) to (length, radius2)
-    const vector r(X - point1_);
-    const scalar a = r & axis_;
-    const vector radial(r - a*axis_);
-    const scalar rho = mag(radial);
-    const vector outward(rho > VSMALL ? radial/rho : vector(Zero));
-
-    const scalar da = length_;
-    const scalar dr = radius2_ - radius1_;
-    const scalar s = min
-    (
-        max(((a*da) + (rho - radius1_)*dr)/(sqr(da) + sqr(dr)), scalar(0)),
-        scalar(1)
-    );
-    const scalar aNear = s*da;
-    const scalar rhoNear = radius1_ + s*dr;
-
-    location = point1_ + aNear*axis_ + rhoNear*outward;
-    const vector d(X - location);
-    distance = mag(d);
-    normal = distance > VSMALL ? d/distance : vector(Zero);
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactWalls::cone::cone
@@ -89,39 +54,36 @@ Foam::wordList Foam::contactWalls::cone::keywords() const
 }
 
 
-void Foam::contactWalls::cone::near
+void Foam::contactWalls::cone::nearest
 (
     const point& X,
-    const scalar reach,
-    DynamicList<label>& features
+    point& location,
+    vector& normal,
+    scalar& distance
 ) const
 {
-    point location;
-    vector normal;
-    scalar distance;
-    nearest(X, location, normal, distance);
-    if (distance < reach)
-    {
-        features.append(0);
-    }
-}
+    // In the plane through the axis and X: axial a, radial rho; the
+    // surface's generator runs from (0, radius1) to (length, radius2)
+    const vector r(X - point1_);
+    const scalar a = r & axis_;
+    const vector radial(r - a*axis_);
+    const scalar rho = mag(radial);
+    const vector outward(rho > VSMALL ? radial/rho : vector(Zero));
 
+    const scalar da = length_;
+    const scalar dr = radius2_ - radius1_;
+    const scalar s = min
+    (
+        max(((a*da) + (rho - radius1_)*dr)/(sqr(da) + sqr(dr)), scalar(0)),
+        scalar(1)
+    );
+    const scalar aNear = s*da;
+    const scalar rhoNear = radius1_ + s*dr;
 
-void Foam::contactWalls::cone::contacts
-(
-    const point& X,
-    const scalar R,
-    const labelUList& features,
-    DynamicList<wallContact>& found
-) const
-{
-    wallContact c;
-    nearest(X, c.location, c.normal, c.distance);
-    if (c.distance < R)
-    {
-        c.feature = 0;
-        found.append(c);
-    }
+    location = point1_ + aNear*axis_ + rhoNear*outward;
+    const vector d(X - location);
+    distance = mag(d);
+    normal = distance > VSMALL ? d/distance : vector(Zero);
 }
 
 

@@ -71,6 +71,54 @@ Foam::autoPtr<Foam::contactWall> Foam::contactWall::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::contactWall::nearest
+(
+    const point& X,
+    point& location,
+    vector& normal,
+    scalar& distance
+) const
+{
+    NotImplemented;
+}
+
+
+void Foam::contactWall::near
+(
+    const point& X,
+    const scalar reach,
+    DynamicList<label>& features
+) const
+{
+    point location;
+    vector normal;
+    scalar distance;
+    nearest(X, location, normal, distance);
+    if (distance < reach)
+    {
+        features.append(0);
+    }
+}
+
+
+void Foam::contactWall::contacts
+(
+    const point& X,
+    const scalar R,
+    const labelUList& features,
+    DynamicList<wallContact>& found
+) const
+{
+    wallContact c;
+    nearest(X, c.location, c.normal, c.distance);
+    if (c.distance < R)
+    {
+        c.feature = 0;
+        found.append(c);
+    }
+}
+
+
 Foam::wordList Foam::contactWall::keywords() const
 {
     return wordList({"type", "material", "lubrication"});

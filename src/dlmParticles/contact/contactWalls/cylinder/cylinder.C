@@ -19,26 +19,6 @@ namespace contactWalls
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::contactWalls::cylinder::nearest
-(
-    const point& X,
-    point& location,
-    vector& normal,
-    scalar& distance
-) const
-{
-    const vector r(X - point_);
-    const vector radial(r - (r & axis_)*axis_);
-    const scalar rho = mag(radial);
-    const vector outward(rho > VSMALL ? radial/rho : vector(Zero));
-    location = X - radial + radius_*outward;
-    distance = mag(rho - radius_);
-    normal = rho < radius_ ? -outward : outward;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactWalls::cylinder::cylinder
@@ -71,39 +51,21 @@ Foam::wordList Foam::contactWalls::cylinder::keywords() const
 }
 
 
-void Foam::contactWalls::cylinder::near
+void Foam::contactWalls::cylinder::nearest
 (
     const point& X,
-    const scalar reach,
-    DynamicList<label>& features
+    point& location,
+    vector& normal,
+    scalar& distance
 ) const
 {
-    point location;
-    vector normal;
-    scalar distance;
-    nearest(X, location, normal, distance);
-    if (distance < reach)
-    {
-        features.append(0);
-    }
-}
-
-
-void Foam::contactWalls::cylinder::contacts
-(
-    const point& X,
-    const scalar R,
-    const labelUList& features,
-    DynamicList<wallContact>& found
-) const
-{
-    wallContact c;
-    nearest(X, c.location, c.normal, c.distance);
-    if (c.distance < R)
-    {
-        c.feature = 0;
-        found.append(c);
-    }
+    const vector r(X - point_);
+    const vector radial(r - (r & axis_)*axis_);
+    const scalar rho = mag(radial);
+    const vector outward(rho > VSMALL ? radial/rho : vector(Zero));
+    location = X - radial + radius_*outward;
+    distance = mag(rho - radius_);
+    normal = rho < radius_ ? -outward : outward;
 }
 
 

@@ -19,22 +19,6 @@ namespace contactWalls
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::contactWalls::plane::nearest
-(
-    const point& X,
-    point& location,
-    vector& normal,
-    scalar& distance
-) const
-{
-    distance = (X - point_) & normal_;
-    location = X - distance*normal_;
-    normal = normal_;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactWalls::plane::plane
@@ -65,39 +49,17 @@ Foam::wordList Foam::contactWalls::plane::keywords() const
 }
 
 
-void Foam::contactWalls::plane::near
+void Foam::contactWalls::plane::nearest
 (
     const point& X,
-    const scalar reach,
-    DynamicList<label>& features
+    point& location,
+    vector& normal,
+    scalar& distance
 ) const
 {
-    point location;
-    vector normal;
-    scalar distance;
-    nearest(X, location, normal, distance);
-    if (distance < reach)
-    {
-        features.append(0);
-    }
-}
-
-
-void Foam::contactWalls::plane::contacts
-(
-    const point& X,
-    const scalar R,
-    const labelUList& features,
-    DynamicList<wallContact>& found
-) const
-{
-    wallContact c;
-    nearest(X, c.location, c.normal, c.distance);
-    if (c.distance < R)
-    {
-        c.feature = 0;
-        found.append(c);
-    }
+    distance = (X - point_) & normal_;
+    location = X - distance*normal_;
+    normal = normal_;
 }
 
 
