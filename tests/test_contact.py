@@ -48,12 +48,17 @@ def both_pairs(entry, value):
             for pair in ("particleParticle", "particleWall")}
 
 
-@pytest.mark.parametrize("law", ["overlapVolume", "linearSpringDashpot"])
+@pytest.mark.parametrize("law", ["overlapVolume", "linearSpringDashpot",
+                                 "linearSpringDashpot unclipped"])
 @pytest.mark.parametrize("e", [0.1, 0.5, 0.9])
 def test_head_on_collision_has_the_requested_restitution(tmp_path, foam_env, law, e):
-    settings = {**both_pairs("restitution", e), **both_pairs("law", law)}
+    """Unclipped: the normal force may pull at the end (as LIGGGHTS'
+    limitForce off), with the textbook damping."""
+    settings = {**both_pairs("restitution", e), **both_pairs("law", law.split()[0])}
+    if law.endswith("unclipped"):
+        settings.update(both_pairs("clipNormalForce", "false"))
     case = dry_case(tmp_path, foam_env, "headOn", settings)
-    if law == "linearSpringDashpot":
+    if law.startswith("linearSpringDashpot"):
         for pair in ("particleParticle", "particleWall"):
             case.run("foamDictionary", "constant/particleProperties", "-entry",
                      f"{PAIRS}/{pair}/impactVelocity", "-remove",

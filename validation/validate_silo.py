@@ -5,7 +5,8 @@ silo, circular orifice D0 = 7 d in the flat floor, linear spring-dashpot
 with tangential history, e = 0.5, mu = 0.5), from the packing LIGGGHTS
 settled (validation/liggghts/silo_packing.dat), run by dlmDEMFoam with the
 same contact constants (law linearSpringDashpot, kt/kn = 2/7, gamma_t =
-gamma_n; walls: four planes and the STL floor with the hole). Discharge rate
+gamma_n, the normal force clipped or not as LIGGGHTS' limitForce; walls:
+four planes and the STL floor with the hole). Discharge rate
 from a linear fit of the discharged mass between the same fractions of the
 charge as the LIGGGHTS script, against LIGGGHTS and Beverloo. Writes
 results/silo.csv (discharged mass against time), results/silo_summary.csv
@@ -24,7 +25,7 @@ from common import RESULTS, ROOT, RUNS, Case, foam_environment, timed_run, write
 
 sys.path.insert(0, str(ROOT / "validation" / "liggghts"))
 from floor_stl import plate_with_hole, write_stl   # noqa: E402
-from scenes import (DENSITY, DIAMETER, FRICTION, KN, KT, MASS, SILO,  # noqa: E402
+from scenes import (DENSITY, FRICTION, KN, KT, LIMIT_FORCE, MASS, SILO,  # noqa: E402
                     TANGENTIAL_DAMPING_RATIO, beverloo)
 
 HEADER = "FoamFile {{ version 2.0; format ascii; class {cls}; object {obj}; }}\n"
@@ -53,7 +54,8 @@ boundary ( sides {{ type patch; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (
     np.savetxt(case.path / "constant/packing.dat", packing, fmt="%.9e")
     law = f"""law linearSpringDashpot; stiffness {KN}; restitution {SILO['e']};
             friction {FRICTION}; tangential spring;
-            tangentialStiffnessRatio {KT/KN!r}; tangentialDampingRatio {TANGENTIAL_DAMPING_RATIO};"""
+            tangentialStiffnessRatio {KT/KN!r}; tangentialDampingRatio {TANGENTIAL_DAMPING_RATIO};
+            clipNormalForce {'true' if LIMIT_FORCE else 'false'};"""
     walls = "\n".join(
         f"        {name} {{ type plane; point ({px} {py} 0); normal ({nx} {ny} 0); }}"
         for name, px, py, nx, ny in (("xMin", -w, 0, 1, 0), ("xMax", w, 0, -1, 0),

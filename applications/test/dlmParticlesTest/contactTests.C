@@ -215,6 +215,20 @@ TEST_CASE("contact laws give the requested restitution at any speed", "[contact]
 }
 
 
+TEST_CASE("unclipped linear damping is the textbook one", "[contact]")
+{
+    // Linear spring-dashpot ending at zero overlap: beta = 2 zeta with
+    // zeta = -ln e/sqrt(pi^2 + ln^2 e) (reference README section 7)
+    for (const scalar e : {0.1, 0.3, 0.5, 0.7, 0.9, 0.95})
+    {
+        const scalar zeta = -std::log(e)/Foam::sqrt(sqr(pi) + sqr(std::log(e)));
+        CHECK(contactLaw::dampingFor(1, e, false) == Approx(2*zeta).epsilon(1e-6));
+        // Clipping the pull at the end needs more damping for the same e
+        CHECK(contactLaw::dampingFor(1, e, true) > 2*zeta);
+    }
+}
+
+
 TEST_CASE("analytic walls find their nearest points", "[contact]")
 {
     REQUIRE(testCase::available());

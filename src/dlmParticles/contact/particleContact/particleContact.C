@@ -397,7 +397,7 @@ Foam::vector Foam::particleContact::tangentialForce
     const scalar h
 )
 {
-    const scalar limit = law.friction()*normalForce;
+    const scalar limit = law.friction()*mag(normalForce);
     const scalar ct = law.tangentialDampingRatio()*damping;
 
     if (law.tangential() == contactLaw::tangentialType::coulomb)
@@ -501,9 +501,23 @@ void Foam::particleContact::applyContact
     // its damping force (not zero at first touch) acts for s h, not the
     // h/2 of the closing half-kick
     const scalar approach = -(relative & normal);
-    if (h > 0 && approach > 0 && depth < approach*h && Fn > 0)
+    // An unclipped contact that will end within the next sub-step, after a
+    // fraction s of it: its damping force (pulling, not zero at the end)
+    // acts for s h, not the h/2 of the next opening half-kick
+    const scalar hc = correctionStep_;
+    if (hc > 0 && approach < 0 && depth < -approach*hc && !law.clip())
     {
-        const scalar s = depth/(approach*h);
+        const scalar s = depth/(-approach*hc);
+        const vector correction(-(2*s - 1)*damping*approach*normal);
+        exitForce_[i] += correction;
+        if (j >= 0)
+        {
+            exitForce_[j] -= correction;
+        }
+    }
+    if (hc > 0 && approach > 0 && depth < approach*hc && Fn > 0)
+    {
+        const scalar s = depth/(approach*hc);
         const vector correction
         (
             -(2*s - 1)*min(damping*approach, Fn)*normal
@@ -582,6 +596,7 @@ void Foam::particleContact::evaluate(const scalar h)
     force_ = Zero;
     torque_ = Zero;
     onsetForce_ = Zero;
+    exitForce_ = Zero;
 
     // The overlap method reads the particles' positions
     forAll(particles, i)
@@ -713,6 +728,8 @@ Foam::particleContact::particleContact
     roughness_(0.01),
     overlap_(overlapMethod::New(dict, cloud)),
     evaluation_(0),
+    correctionStep_(0),
+    lastSubStep_(0),
     activeStep_(GREAT),
     nActive_(0)
 {
@@ -836,6 +853,7 @@ void Foam::particleContact::evolve
     force_.setSize(n);
     torque_.setSize(n);
     onsetForce_.setSize(n);
+    exitForce_.setSize(n);
     forAll(particles, i)
     {
         const dlmParticle& p = particles[i];
@@ -856,6 +874,9 @@ void Foam::particleContact::evolve
     vectorField halfOmega(n, Zero);
 
     const scalar hImpact = impactStep(deltaT, accel);
+    // The first evaluation sees the step of the last sub-step for the
+    // corrections of contacts that begin or end; its springs do not advance
+    correctionStep_ = lastSubStep_;
     evaluate(0);
 
     scalar t = 0;
@@ -865,9 +886,12 @@ void Foam::particleContact::evolve
     while (t < deltaT*(1 - 1e-12))
     {
         const scalar h = min(deltaT - t, min(hImpact, activeStep_));
+        correctionStep_ = h;
+        lastSubStep_ = h;
         hMin = min(hMin, h);
 
-        const vectorField force0(force_);
+        // Forces of the opening half-kick
+        const vectorField force0(force_ + exitForce_);
         const vectorField torque0(torque_);
         forAll(particles, i)
         {
@@ -880,7 +904,7 @@ void Foam::particleContact::evolve
             {
                 const vector dv
                 (
-                    0.5*h*(accel[i] + inverseMass(i)*force_[i])
+                    0.5*h*(accel[i] + inverseMass(i)*force0[i])
                 );
                 const vector domega
                 (

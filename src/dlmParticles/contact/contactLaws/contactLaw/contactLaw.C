@@ -28,15 +28,17 @@ void Foam::contactLaw::collide
 (
     const scalar n,
     const scalar beta,
+    const bool clip,
     scalar& restitution,
     scalar& contactTime
 )
 {
-    // Clipped at zero: the contact ends when the force would pull
-    auto acceleration = [n, beta](const scalar x, const scalar v)
+    // Clipped at zero, the contact ends when the force would pull
+    auto acceleration = [n, beta, clip](const scalar x, const scalar v)
     {
         const scalar xp = max(x, scalar(0));
-        return min(-pow(xp, n) - beta*sqrt(n*pow(xp, n - 1))*v, scalar(0));
+        const scalar a = -pow(xp, n) - beta*sqrt(n*pow(xp, n - 1))*v;
+        return clip ? min(a, scalar(0)) : a;
     };
 
     const scalar h = 1e-4;
@@ -65,7 +67,7 @@ void Foam::contactLaw::collide
             contactTime = t + s*h;
             return;
         }
-        if (v1 < 0 && acceleration(x1, v1) == 0)
+        if (clip && v1 < 0 && acceleration(x1, v1) == 0)
         {
             // Force released while separating: the contact ends here
             restitution = -v1;
@@ -84,7 +86,7 @@ void Foam::contactLaw::collide
 
 void Foam::contactLaw::setDamping()
 {
-    beta_ = dampingFor(exponent(), restitution_);
+    beta_ = dampingFor(exponent(), restitution_, clip_);
     if (beta_ < 0)
     {
         FatalIOErrorInFunction(dict_)
@@ -94,7 +96,7 @@ void Foam::contactLaw::setDamping()
             << exit(FatalIOError);
     }
     scalar e;
-    collide(exponent(), beta_, e, tau_);
+    collide(exponent(), beta_, clip_, e, tau_);
 }
 
 
@@ -127,6 +129,7 @@ Foam::contactLaw::contactLaw
     (
         dict.getOrDefault<scalar>("tangentialDampingRatio", 1)
     ),
+    clip_(dict.getOrDefault<bool>("clipNormalForce", true)),
     beta_(0),
     tau_(0)
 {
@@ -160,7 +163,8 @@ Foam::wordList Foam::contactLaw::keywords() const
     return wordList
     ({
         "materials", "law", "restitution", "friction", "tangential",
-        "tangentialStiffnessRatio", "tangentialDampingRatio"
+        "tangentialStiffnessRatio", "tangentialDampingRatio",
+        "clipNormalForce"
     });
 }
 
@@ -179,7 +183,8 @@ Foam::scalar Foam::contactLaw::normalForce
     scalar force;
     elastic(V, delta, radius, force, stiffness);
     damping = beta_*sqrt(mass*stiffness);
-    return max(force + damping*approachSpeed, scalar(0));
+    const scalar Fn = force + damping*approachSpeed;
+    return clip_ ? max(Fn, scalar(0)) : Fn;
 }
 
 
@@ -197,15 +202,25 @@ Foam::scalar Foam::contactLaw::contactTime
 }
 
 
-Foam::scalar Foam::contactLaw::restitution(const scalar n, const scalar beta)
+Foam::scalar Foam::contactLaw::restitution
+(
+    const scalar n,
+    const scalar beta,
+    const bool clip
+)
 {
     scalar e, tau;
-    collide(n, beta, e, tau);
+    collide(n, beta, clip, e, tau);
     return e;
 }
 
 
-Foam::scalar Foam::contactLaw::dampingFor(const scalar n, const scalar e)
+Foam::scalar Foam::contactLaw::dampingFor
+(
+    const scalar n,
+    const scalar e,
+    const bool clip
+)
 {
     if (e >= 1)
     {
@@ -215,7 +230,7 @@ Foam::scalar Foam::contactLaw::dampingFor(const scalar n, const scalar e)
     // Restitution falls as beta grows: bracket, then bisect
     scalar lower = 0;
     scalar upper = 1;
-    while (restitution(n, upper) > e)
+    while (restitution(n, upper, clip) > e)
     {
         lower = upper;
         upper *= 2;
@@ -227,7 +242,7 @@ Foam::scalar Foam::contactLaw::dampingFor(const scalar n, const scalar e)
     for (label iter = 0; iter < 60 && upper - lower > 1e-10*upper; ++iter)
     {
         const scalar mid = 0.5*(lower + upper);
-        (restitution(n, mid) > e ? lower : upper) = mid;
+        (restitution(n, mid, clip) > e ? lower : upper) = mid;
     }
     return 0.5*(lower + upper);
 }
