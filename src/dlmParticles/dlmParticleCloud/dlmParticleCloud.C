@@ -507,6 +507,12 @@ Foam::dlmParticleCloud::dlmParticleCloud
         readParticleFile();
     }
 
+    // The cell searches use the tet decomposition, which every processor
+    // must build together (its first use is collective): a search that
+    // finds nothing on one processor would otherwise leave the others
+    // waiting
+    mesh.tetBasePtIs();
+
     const pointField& points = mesh.points();
     const labelListList& cellPoints = mesh.cellPoints();
     const scalarField& V = mesh.V();
