@@ -333,3 +333,18 @@ def test_contact_forces_are_the_same_on_one_and_two_processors(tmp_path, foam_en
     for columns in [slice(1, 4), slice(4, 7), slice(16, 19)]:
         scale = np.abs(s[:, columns] - s[0, columns]).max()
         assert np.abs(p[:, columns] - s[:, columns]).max() < 1e-6*scale
+
+
+@pytest.mark.parametrize("interval", [0, 5])
+def test_history_interval_thins_the_history(tmp_path, foam_env, interval):
+    """historyInterval N writes every N-th step (30 steps here), 0 none."""
+    case = dry_case(tmp_path, foam_env, f"history{interval}",
+                    {("constant/particleProperties", "historyInterval"): interval})
+    case.run("dlmDEMFoam")
+    path = case.path / "postProcessing/particles/0/particles.dat"
+    if interval == 0:
+        assert not path.exists()
+    else:
+        h = case.history()["left"]
+        assert len(h) == 30//interval
+        assert np.allclose(np.diff(h[:, 0]), interval*1e-4)

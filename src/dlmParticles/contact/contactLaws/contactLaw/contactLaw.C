@@ -84,7 +84,7 @@ void Foam::contactLaw::collide
 }
 
 
-void Foam::contactLaw::setDamping()
+void Foam::contactLaw::initialise(const reference& ref)
 {
     beta_ = dampingFor(exponent(), restitution_, clip_);
     if (beta_ < 0)
@@ -97,6 +97,44 @@ void Foam::contactLaw::setDamping()
     }
     scalar e;
     collide(exponent(), beta_, clip_, e, tau_);
+
+    const bool linear = exponent() == 1;
+    if (dict_.found("stiffness") == dict_.found("contactTime"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Contact pair " << dict_.dictName() << " (law "
+            << dict_.get<word>("law") << ") needs either 'stiffness' or"
+            << " 'contactTime'" << (linear ? "" : " with 'impactVelocity'")
+            << exit(FatalIOError);
+    }
+    if (dict_.found("stiffness"))
+    {
+        stiffness_ = dict_.get<scalar>("stiffness");
+    }
+    else
+    {
+        // The collision of the reference contact at speed v lasts
+        // tau delta0/v, with K delta0^(n+1) = m v^2 (for the linear law
+        // tau sqrt(m/K), whatever v)
+        const scalar time = dict_.get<scalar>("contactTime");
+        const scalar v = linear ? 1 : dict_.get<scalar>("impactVelocity");
+        if (time <= 0 || v <= 0)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "contactTime" << (linear ? "" : " and impactVelocity")
+                << " of contact pair " << dict_.dictName()
+                << " must be positive" << exit(FatalIOError);
+        }
+        stiffness_ =
+            ref.mass*sqr(v)/pow(time*v/tau_, exponent() + 1)
+           /geometryFactor(ref.radius);
+    }
+    if (stiffness_ <= 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "stiffness " << stiffness_ << " of contact pair "
+            << dict_.dictName() << " must be positive" << exit(FatalIOError);
+    }
 }
 
 
@@ -131,7 +169,8 @@ Foam::contactLaw::contactLaw
     ),
     clip_(dict.getOrDefault<bool>("clipNormalForce", true)),
     beta_(0),
-    tau_(0)
+    tau_(0),
+    stiffness_(1)
 {
     if (restitution_ <= 0 || restitution_ > 1)
     {
@@ -160,12 +199,17 @@ Foam::contactLaw::contactLaw
 
 Foam::wordList Foam::contactLaw::keywords() const
 {
-    return wordList
+    wordList words
     ({
         "materials", "law", "restitution", "friction", "tangential",
         "tangentialStiffnessRatio", "tangentialDampingRatio",
-        "clipNormalForce"
+        "clipNormalForce", "stiffness", "contactTime"
     });
+    if (exponent() != 1)
+    {
+        words.append("impactVelocity");
+    }
+    return words;
 }
 
 

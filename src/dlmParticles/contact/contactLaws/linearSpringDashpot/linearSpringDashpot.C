@@ -28,52 +28,13 @@ Foam::contactLaws::linearSpringDashpot::linearSpringDashpot
     const reference& ref
 )
 :
-    contactLaw(dict, nDimensions),
-    stiffness_(1)
+    contactLaw(dict, nDimensions)
 {
-    setDamping();
-
-    if (dict.found("stiffness") == dict.found("contactTime"))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Contact pair " << dict.dictName() << " (law"
-            << " linearSpringDashpot) needs either 'stiffness' or"
-            << " 'contactTime'" << exit(FatalIOError);
-    }
-    if (dict.found("stiffness"))
-    {
-        stiffness_ = dict.get<scalar>("stiffness");
-    }
-    else
-    {
-        // t = tau sqrt(m/k)
-        const scalar time = dict.get<scalar>("contactTime");
-        if (time <= 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "contactTime of contact pair " << dict.dictName()
-                << " must be positive" << exit(FatalIOError);
-        }
-        stiffness_ = ref.mass*sqr(tau_/time);
-    }
-    if (stiffness_ <= 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "stiffness " << stiffness_ << " of contact pair "
-            << dict.dictName() << " must be positive" << exit(FatalIOError);
-    }
+    initialise(ref);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::wordList Foam::contactLaws::linearSpringDashpot::keywords() const
-{
-    wordList words(contactLaw::keywords());
-    words.append(wordList({"stiffness", "contactTime"}));
-    return words;
-}
-
 
 Foam::scalar Foam::contactLaws::linearSpringDashpot::exponent() const
 {
@@ -81,12 +42,12 @@ Foam::scalar Foam::contactLaws::linearSpringDashpot::exponent() const
 }
 
 
-Foam::scalar Foam::contactLaws::linearSpringDashpot::leadingCoefficient
+Foam::scalar Foam::contactLaws::linearSpringDashpot::geometryFactor
 (
     const scalar radius
 ) const
 {
-    return stiffness_;
+    return 1;
 }
 
 

@@ -31,55 +31,13 @@ Foam::contactLaws::overlapVolume::overlapVolume
     const reference& ref
 )
 :
-    contactLaw(dict, nDimensions),
-    stiffness_(1)
+    contactLaw(dict, nDimensions)
 {
-    setDamping();
-
-    if (dict.found("stiffness") == dict.found("contactTime"))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Contact pair " << dict.dictName() << " (law overlapVolume)"
-            << " needs either 'stiffness' or 'contactTime' with"
-            << " 'impactVelocity'" << exit(FatalIOError);
-    }
-    if (dict.found("stiffness"))
-    {
-        stiffness_ = dict.get<scalar>("stiffness");
-    }
-    else
-    {
-        const scalar time = dict.get<scalar>("contactTime");
-        const scalar v = dict.get<scalar>("impactVelocity");
-        if (time <= 0 || v <= 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "contactTime and impactVelocity of contact pair "
-                << dict.dictName() << " must be positive" << exit(FatalIOError);
-        }
-        // t = tau delta0/v with K delta0^(n+1) = m v^2
-        const scalar n = exponent();
-        stiffness_ = ref.mass*sqr(v)/pow(time*v/tau_, n + 1)
-           /leadingCoefficient(ref.radius);
-    }
-    if (stiffness_ <= 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "stiffness " << stiffness_ << " of contact pair "
-            << dict.dictName() << " must be positive" << exit(FatalIOError);
-    }
+    initialise(ref);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::wordList Foam::contactLaws::overlapVolume::keywords() const
-{
-    wordList words(contactLaw::keywords());
-    words.append(wordList({"stiffness", "contactTime", "impactVelocity"}));
-    return words;
-}
-
 
 Foam::scalar Foam::contactLaws::overlapVolume::exponent() const
 {
@@ -87,15 +45,13 @@ Foam::scalar Foam::contactLaws::overlapVolume::exponent() const
 }
 
 
-Foam::scalar Foam::contactLaws::overlapVolume::leadingCoefficient
+Foam::scalar Foam::contactLaws::overlapVolume::geometryFactor
 (
     const scalar radius
 ) const
 {
-    return
-        nDimensions_ == 3
-      ? stiffness_*pi*radius
-      : stiffness_*4.0/3.0*sqrt(2*radius);
+    // Small-overlap lens: V = pi R* delta^2, or 4/3 sqrt(2 R*) delta^1.5
+    return nDimensions_ == 3 ? pi*radius : 4.0/3.0*sqrt(2*radius);
 }
 
 
