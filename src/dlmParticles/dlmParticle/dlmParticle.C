@@ -111,6 +111,20 @@ Foam::dlmParticle::dlmParticle(const dlmParticle& p)
 {}
 
 
+Foam::dlmParticle::dlmParticle
+(
+    const dlmParticle& p,
+    const word& name,
+    const point& X
+)
+:
+    dlmParticle(p)
+{
+    name_ = name;
+    position_ = X;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::dlmParticle::move(const scalar deltaT)

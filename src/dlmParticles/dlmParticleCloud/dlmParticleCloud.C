@@ -15,6 +15,7 @@
 #include "HashSet.H"
 #include "OSspecific.H"
 #include "emptyPolyPatch.H"
+#include "cyclicPolyPatch.H"
 #include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -154,22 +155,112 @@ void Foam::dlmParticleCloud::checkParticles()
                 << exit(FatalError);
         }
     }
+}
 
+
+Foam::List<Foam::vector>
+Foam::dlmParticleCloud::periodicTranslations(const fvMesh& mesh)
+{
+    DynamicList<vector> translations;
+    for (const polyPatch& patch : mesh.boundaryMesh())
+    {
+        const cyclicPolyPatch* cyclicPtr = isA<cyclicPolyPatch>(patch);
+        if (!cyclicPtr || !cyclicPtr->owner())
+        {
+            continue;
+        }
+        // Known where the pair (or a processor part of it) has faces
+        vector translation(Zero);
+        if (cyclicPtr->separated() && cyclicPtr->separation().size())
+        {
+            translation = cyclicPtr->separation()[0];
+        }
+        reduce(translation, maxMagSqrOp<vector>());
+        if (magSqr(translation) > 0)
+        {
+            translations.append(translation);
+        }
+    }
+    return translations;
+}
+
+
+void Foam::dlmParticleCloud::addPeriodicImages()
+{
+    nParticles_ = particles_.size();
+
+    // Every combination of -1, 0 and 1 times each translation
+    DynamicList<vector> offsets(1, Zero);
+    for (const vector& t : periodicTranslations(mesh_))
+    {
+        const label n = offsets.size();
+        for (label k = 0; k < n; ++k)
+        {
+            offsets.append(offsets[k] + t);
+            offsets.append(offsets[k] - t);
+        }
+    }
+
+    const boundBox& bounds = mesh_.bounds();
+    DynamicList<label> sources;
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        const dlmParticle& p = particles_[i];
+        const scalar Rb = p.shape().boundingRadius();
+        for (label k = 1; k < offsets.size(); ++k)
+        {
+            const point X(p.position() + offsets[k]);
+            if (!boundBox(X - Rb*vector::one, X + Rb*vector::one)
+                .overlaps(bounds))
+            {
+                continue;
+            }
+            if (p.isFree())
+            {
+                FatalErrorInFunction
+                    << "Particle " << p.name() << " ("
+                    << properties_.objectPath() << ") crosses a periodic"
+                    << " boundary: only fixed and prescribed particles may"
+                    << " (their periodic images are added); free particles"
+                    << " must stay clear of periodic boundaries"
+                    << exit(FatalError);
+            }
+            particles_.append
+            (
+                new dlmParticle(p, p.name() + "_image" + Foam::name(k), X)
+            );
+            sources.append(i);
+        }
+    }
+    imageSource_.transfer(sources);
+
+    if (imageSource_.size())
+    {
+        Info<< "Periodic images: " << imageSource_.size() << endl;
+    }
+}
+
+
+void Foam::dlmParticleCloud::checkOverlaps() const
+{
     // Without contact forces nothing would part overlapping particles
     if (properties_.found("contact"))
     {
         return;
     }
+    const fileName& source = properties_.objectPath();
     forAll(particles_, i)
     {
         const dlmParticle& pi = particles_[i];
         for (label j = i + 1; j < particles_.size(); ++j)
         {
             const dlmParticle& pj = particles_[j];
+            const scalar contactDistance =
+                pi.shape().boundingRadius() + pj.shape().boundingRadius();
             const scalar gap =
-                mag(pi.position() - pj.position())
-              - pi.shape().boundingRadius() - pj.shape().boundingRadius();
-            if (gap < 0)
+                mag(pi.position() - pj.position()) - contactDistance;
+            // Touching (as in a packing) is no overlap, to round-off
+            if (gap < -1e-9*contactDistance)
             {
                 FatalErrorInFunction
                     << "Particles " << pi.name() << " and " << pj.name()
@@ -291,15 +382,16 @@ void Foam::dlmParticleCloud::writeVTK() const
     {
         OFstream os(dir/"particles_" + timeName + ".vtk");
         os.precision(10);
-        const label n = particles_.size();
+        const label n = nParticles_;
 
         os  << "# vtk DataFile Version 3.0" << nl
             << "pimpleDLMFoam particles, time " << timeName << nl
             << "ASCII" << nl
             << "DATASET POLYDATA" << nl
             << "POINTS " << n << " double" << nl;
-        for (const dlmParticle& p : particles_)
+        for (label i = 0; i < n; ++i)
         {
+            const dlmParticle& p = particles_[i];
             const point& X = p.position();
             os  << X.x() << ' ' << X.y() << ' ' << X.z() << nl;
         }
@@ -312,22 +404,25 @@ void Foam::dlmParticleCloud::writeVTK() const
         os  << "POINT_DATA " << n << nl
             << "SCALARS diameter double 1" << nl
             << "LOOKUP_TABLE default" << nl;
-        for (const dlmParticle& p : particles_)
+        for (label i = 0; i < n; ++i)
         {
+            const dlmParticle& p = particles_[i];
             os  << 2*p.shape().boundingRadius() << nl;
         }
         os  << "SCALARS density double 1" << nl
             << "LOOKUP_TABLE default" << nl;
-        for (const dlmParticle& p : particles_)
+        for (label i = 0; i < n; ++i)
         {
+            const dlmParticle& p = particles_[i];
             os  << p.density() << nl;
         }
 
         auto writeVectors = [&](const char* name, vector (*get)(const dlmParticle&))
         {
             os  << "VECTORS " << name << " double" << nl;
-            for (const dlmParticle& p : particles_)
+            for (label i = 0; i < n; ++i)
             {
+                const dlmParticle& p = particles_[i];
                 const vector v(get(p));
                 os  << v.x() << ' ' << v.y() << ' ' << v.z() << nl;
             }
@@ -414,6 +509,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
         properties_.getOrDefault<scalar>("surfaceResolution", 32)
     ),
     historyInterval_(properties_.getOrDefault<label>("historyInterval", 1)),
+    nParticles_(0),
     cellSizeMax_(gMax(mag(mesh.delta()().primitiveField()))),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
@@ -540,6 +636,8 @@ Foam::dlmParticleCloud::dlmParticleCloud
     }
 
     checkParticles();
+    addPeriodicImages();
+    checkOverlaps();
 
     if (properties_.found("contact"))
     {
@@ -563,11 +661,24 @@ Foam::dlmParticleCloud::dlmParticleCloud
         updateFields();
     }
 
-    Info<< "Particles: " << particles_.size() << endl;
+    Info<< "Particles: " << nParticles_ << endl;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dlmParticleCloud::setProjected()
+{
+    projected_ = true;
+
+    forAll(imageSource_, k)
+    {
+        const dlmParticle& image = particles_[nParticles_ + k];
+        dlmParticle& p = particles_[imageSource_[k]];
+        p.setLoads(p.force() + image.force(), p.torque() + image.torque());
+    }
+}
+
 
 void Foam::dlmParticleCloud::move()
 {
@@ -663,8 +774,9 @@ void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
 
         OFstream& os = historyFile_();
         const word timeName(mesh_.time().timeName());
-        for (const dlmParticle& p : particles_)
+        for (label i = 0; i < nParticles_; ++i)
         {
+            const dlmParticle& p = particles_[i];
             os  << mesh_.time().value() << ' ' << p.name().c_str();
             for (const vector& v :
                 {
@@ -692,8 +804,9 @@ bool Foam::dlmParticleCloud::writeData(Ostream& os) const
     const auto oldPrecision = os.precision(17);
 
     os.beginBlock("particles");
-    for (const dlmParticle& p : particles_)
+    for (label i = 0; i < nParticles_; ++i)
     {
+        const dlmParticle& p = particles_[i];
         p.write(os);
     }
     os.endBlock();
