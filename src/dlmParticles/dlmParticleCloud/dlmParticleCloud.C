@@ -209,9 +209,18 @@ void Foam::dlmParticleCloud::addPeriodicImages()
         const scalar Rb = p.shape().boundingRadius();
         for (label k = 1; k < offsets.size(); ++k)
         {
+            // Images that only touch the mesh (a packing touching the
+            // periodic faces) are left out
             const point X(p.position() + offsets[k]);
-            if (!boundBox(X - Rb*vector::one, X + Rb*vector::one)
-                .overlaps(bounds))
+            const scalar touch = 1e-9*Rb;
+            bool inside = true;
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                inside = inside
+                 && X[d] - Rb < bounds.max()[d] - touch
+                 && X[d] + Rb > bounds.min()[d] + touch;
+            }
+            if (!inside)
             {
                 continue;
             }

@@ -255,11 +255,15 @@ bool Foam::functionObjects::packedBed::write()
     const scalar mu = rhoFluid*transport.get<dimensionedScalar>("nu").value();
     const scalar D = diameter();
     const scalar G = patches_.size() ? gradPatches : gradDrag;
-    const scalar Re = rhoFluid*D*u/(mu*(1 - eps));
-    const scalar Lambda = G*pow3(eps)*sqr(D)/(sqr(1 - eps)*mu*u);
+    // Undefined without particles or flow (a bed starting at rest): 0
+    const bool defined = eps < 1 && mag(u) > 0;
+    const scalar Re = defined ? rhoFluid*D*u/(mu*(1 - eps)) : 0;
+    const scalar Lambda =
+        defined ? G*pow3(eps)*sqr(D)/(sqr(1 - eps)*mu*u) : 0;
     const scalar LambdaErgun = 150 + 1.75*Re;
     const scalar dragPerParticle = drag/max(nBed, 1);
     const scalar stokesDrag = 3*constant::mathematical::pi*mu*D*u;
+    const scalar dragRatio = defined ? dragPerParticle/stokesDrag : 0;
 
     if (Pstream::master())
     {
@@ -269,7 +273,7 @@ bool Foam::functionObjects::packedBed::write()
             const scalar value :
             {
                 u, eps, gradDrag, gradPatches, Re, Lambda, LambdaErgun,
-                dragPerParticle, dragPerParticle/stokesDrag
+                dragPerParticle, dragRatio
             }
         )
         {

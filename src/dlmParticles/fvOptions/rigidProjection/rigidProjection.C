@@ -232,15 +232,81 @@ void Foam::fv::rigidProjection::updateRegions()
     sampleFaces_.setSize(nParticles);
     sampleCoeffs_.setSize(nParticles);
 
+    markInsideCells();
     for (label i = 0; i < nParticles; ++i)
     {
         findRegion(i);
     }
+    resolveSharedCells();
 
     restrictForce();
     heldForce_ = force_.primitiveField();
     sumRegionGeometry();
     regionTimeIndex_ = timeIndex;
+}
+
+
+void Foam::fv::rigidProjection::markInsideCells()
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const PtrList<dlmParticle>& particles = cloud.particles();
+    const vectorField& C = mesh_.C();
+
+    insideAny_ = 0;
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        const tensor Rt(p.R().T());
+        vector normal;
+        for (const label celli : cloud.nearCells(i))
+        {
+            if
+            (
+                p.shape().signedDistance(Rt & (C[celli] - p.position()), normal)
+              < 0
+            )
+            {
+                insideAny_[celli] = 1;
+            }
+        }
+    }
+
+    const labelUList& faceCells = mesh_.faceOwner();
+    forAll(insideAcross_, bFacei)
+    {
+        const label facei = mesh_.nInternalFaces() + bFacei;
+        insideAcross_[bFacei] = insideAny_[faceCells[facei]];
+        insideSecondLayer_[bFacei] =
+            secondLayerCell_[bFacei] >= 0
+          ? insideAny_[secondLayerCell_[bFacei]]
+          : 0;
+    }
+    syncTools::swapBoundaryFaceList(mesh_, insideAcross_);
+    syncTools::swapBoundaryFaceList(mesh_, insideSecondLayer_);
+}
+
+
+bool Foam::fv::rigidProjection::sampleInside
+(
+    const label celli,
+    const labelPair& face
+) const
+{
+    if (celli >= 0)
+    {
+        return insideAny_[celli];
+    }
+    const fvPatch& fp = mesh_.boundary()[face.first()];
+    if (!fp.coupled())
+    {
+        return false;
+    }
+    const label bFacei = fp.start() + face.second() - mesh_.nInternalFaces();
+    return
+        celli == secondLayerSample
+      ? insideSecondLayer_[bFacei]
+      : insideAcross_[bFacei];
 }
 
 
@@ -386,7 +452,12 @@ void Foam::fv::rigidProjection::findRegion(const label i)
             for (const neighbourSample& cand : nbrs)
             {
                 const scalar c = (e & cand.delta)/mag(cand.delta);
-                if (!cand.inside && c < cosOut)
+                if
+                (
+                    !cand.inside
+                 && !sampleInside(cand.celli, cand.face)
+                 && c < cosOut
+                )
                 {
                     out = &cand;
                     cosOut = c;
@@ -428,7 +499,10 @@ void Foam::fv::rigidProjection::findRegion(const label i)
                 }
             }
             const scalar Lout2 = -(e & delta2);
-            quadratic = quadratic && Lout2 > 0.5*Lout;
+            quadratic =
+                quadratic
+             && Lout2 > 0.5*Lout
+             && !sampleInside(out2Cell, out2Face);
 
             scalar aLine, cOut, cOut2 = 0;
             if (quadratic)
@@ -480,6 +554,103 @@ void Foam::fv::rigidProjection::findRegion(const label i)
     for (const label celli : candidates)
     {
         inside_[celli] = false;
+    }
+}
+
+
+void Foam::fv::rigidProjection::resolveSharedCells()
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const PtrList<dlmParticle>& particles = cloud.particles();
+    const vectorField& C = mesh_.C();
+
+    auto signedDistance = [&](const label i, const label celli)
+    {
+        const dlmParticle& p = particles[i];
+        vector normal;
+        return p.shape().signedDistance
+        (
+            p.R().T() & (C[celli] - p.position()),
+            normal
+        );
+    };
+
+    bool shared = false;
+    forAll(particles, i)
+    {
+        for (const label celli : regionCells_[i])
+        {
+            label& owner = regionOwner_[celli];
+            if (owner < 0)
+            {
+                owner = i;
+            }
+            else
+            {
+                shared = true;
+                if (signedDistance(i, celli) < signedDistance(owner, celli))
+                {
+                    owner = i;
+                }
+            }
+        }
+    }
+
+    if (shared)
+    {
+        forAll(particles, i)
+        {
+            DynamicList<label>& cells = regionCells_[i];
+            DynamicList<scalar>& weights = regionWeights_[i];
+            DynamicList<vector>& arms = regionArms_[i];
+            DynamicList<label>& starts = sampleStarts_[i];
+            DynamicList<label>& sampleCells = sampleCells_[i];
+            DynamicList<labelPair>& sampleFaces = sampleFaces_[i];
+            DynamicList<scalar>& sampleCoeffs = sampleCoeffs_[i];
+
+            // Compact in place: kept entries only move towards the front
+            label nKept = 0;
+            label nSamples = 0;
+            forAll(cells, k)
+            {
+                if (regionOwner_[cells[k]] != i)
+                {
+                    continue;
+                }
+                const label first = starts[k];
+                const label last = starts[k + 1];
+                cells[nKept] = cells[k];
+                weights[nKept] = weights[k];
+                arms[nKept] = arms[k];
+                starts[nKept] = nSamples;
+                for (label s = first; s < last; ++s)
+                {
+                    sampleCells[nSamples] = sampleCells[s];
+                    sampleFaces[nSamples] = sampleFaces[s];
+                    sampleCoeffs[nSamples] = sampleCoeffs[s];
+                    ++nSamples;
+                }
+                ++nKept;
+            }
+            starts[nKept] = nSamples;
+            cells.setSize(nKept);
+            weights.setSize(nKept);
+            arms.setSize(nKept);
+            starts.setSize(nKept + 1);
+            sampleCells.setSize(nSamples);
+            sampleFaces.setSize(nSamples);
+            sampleCoeffs.setSize(nSamples);
+        }
+    }
+
+    // Every shared cell stays in its owner's list: reset through them
+    forAll(particles, i)
+    {
+        for (const label celli : regionCells_[i])
+        {
+            regionOwner_[celli] = -1;
+        }
     }
 }
 
@@ -693,6 +864,10 @@ Foam::fv::rigidProjection::rigidProjection
     ),
     heldForce_(force_.primitiveField()),
     inside_(mesh.nCells(), false),
+    regionOwner_(mesh.nCells(), -1),
+    insideAny_(mesh.nCells(), 0),
+    insideAcross_(mesh.nBoundaryFaces(), 0),
+    insideSecondLayer_(mesh.nBoundaryFaces(), 0),
     coupledDeltas_(mesh.boundary().size()),
     secondLayerCell_(mesh.nBoundaryFaces(), -1),
     secondLayerDelta_(mesh.nBoundaryFaces(), Zero),
@@ -983,7 +1158,9 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         const scalar* g = &geometricSums_[nGeometricSums*i];
         const scalar* s = &sums[nVelocitySums*i];
 
-        if (g[gA11] <= 0)
+        // A held particle (a periodic image reaching just into the mesh,
+        // say) may force no cell; a free one could not move
+        if (g[gA11] <= 0 && p.isFree())
         {
             FatalErrorInFunction
                 << "Particle " << p.name() << " covers no cell centre"
