@@ -498,11 +498,14 @@ void Foam::fv::rigidProjection::findRegion(const label i)
                     quadratic = true;
                 }
             }
+            // Two fluid cells between surfaces: forced towards each other
+            // they would block the gap, so leave the line to the flow
+            if (quadratic && sampleInside(out2Cell, out2Face))
+            {
+                continue;
+            }
             const scalar Lout2 = -(e & delta2);
-            quadratic =
-                quadratic
-             && Lout2 > 0.5*Lout
-             && !sampleInside(out2Cell, out2Face);
+            quadratic = quadratic && Lout2 > 0.5*Lout;
 
             scalar aLine, cOut, cOut2 = 0;
             if (quadratic)
