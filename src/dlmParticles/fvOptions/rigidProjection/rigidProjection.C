@@ -224,6 +224,20 @@ void Foam::fv::rigidProjection::updateRegions()
         mesh_.lookupObject<dlmParticleCloud>("particles");
     const label nParticles = cloud.particles().size();
 
+    // Fixed particles alone (a fixed bed) keep their cells and sums: found
+    // at the first step only
+    bool moved = regionTimeIndex_ < 0;
+    for (const dlmParticle& p : cloud.particles())
+    {
+        moved = moved || p.motion() != dlmParticle::motionType::fixed;
+    }
+    if (!moved)
+    {
+        heldForce_ = force_.primitiveField();
+        regionTimeIndex_ = timeIndex;
+        return;
+    }
+
     regionCells_.setSize(nParticles);
     regionWeights_.setSize(nParticles);
     regionArms_.setSize(nParticles);
