@@ -361,7 +361,10 @@ void Foam::dlmParticleCloud::updateFields()
 
     forAll(particles_, i)
     {
-        const scalar deltaRho = particles_[i].density() - rhoFluid_.value();
+        const scalar deltaRho =
+            particles_[i].isFree()
+          ? particles_[i].density() - rhoFluid_.value()
+          : 0;
         const DynamicList<label>& cells = cells_[i];
         const DynamicList<scalar>& fractions = fractions_[i];
 

@@ -267,7 +267,7 @@ void Foam::fv::rigidProjection::markInsideCells()
     const PtrList<dlmParticle>& particles = cloud.particles();
     const vectorField& C = mesh_.C();
 
-    insideAny_ = 0;
+    insideOf_ = -1;
     forAll(particles, i)
     {
         const dlmParticle& p = particles[i];
@@ -281,46 +281,84 @@ void Foam::fv::rigidProjection::markInsideCells()
               < 0
             )
             {
-                insideAny_[celli] = 1;
+                insideOf_[celli] = cloud.source(i);
             }
         }
     }
 
     const labelUList& faceCells = mesh_.faceOwner();
+    auto exchange = [&](const labelList& cellValues, labelList& across,
+                        labelList& secondLayer)
+    {
+        forAll(across, bFacei)
+        {
+            const label facei = mesh_.nInternalFaces() + bFacei;
+            across[bFacei] = cellValues[faceCells[facei]];
+            secondLayer[bFacei] =
+                secondLayerCell_[bFacei] >= 0
+              ? cellValues[secondLayerCell_[bFacei]]
+              : -1;
+        }
+        syncTools::swapBoundaryFaceList(mesh_, across);
+        syncTools::swapBoundaryFaceList(mesh_, secondLayer);
+    };
+    exchange(insideOf_, insideAcross_, insideSecondLayer_);
+
+    // The body next to each fluid cell, across its faces
+    auto addBody = [](label& next, const label body)
+    {
+        if (body >= 0 && next != body)
+        {
+            next = next == -1 ? body : -2;
+        }
+    };
+    nextTo_ = -1;
+    forAll(mesh_.neighbour(), facei)
+    {
+        const label own = mesh_.owner()[facei];
+        const label nei = mesh_.neighbour()[facei];
+        addBody(nextTo_[own], insideOf_[nei]);
+        addBody(nextTo_[nei], insideOf_[own]);
+    }
     forAll(insideAcross_, bFacei)
     {
-        const label facei = mesh_.nInternalFaces() + bFacei;
-        insideAcross_[bFacei] = insideAny_[faceCells[facei]];
-        insideSecondLayer_[bFacei] =
-            secondLayerCell_[bFacei] >= 0
-          ? insideAny_[secondLayerCell_[bFacei]]
-          : 0;
+        addBody
+        (
+            nextTo_[faceCells[mesh_.nInternalFaces() + bFacei]],
+            insideAcross_[bFacei]
+        );
     }
-    syncTools::swapBoundaryFaceList(mesh_, insideAcross_);
-    syncTools::swapBoundaryFaceList(mesh_, insideSecondLayer_);
+    exchange(nextTo_, nextToAcross_, nextToSecondLayer_);
 }
 
 
-bool Foam::fv::rigidProjection::sampleInside
+bool Foam::fv::rigidProjection::sampleUsable
 (
+    const label body,
     const label celli,
     const labelPair& face
 ) const
 {
+    label inside = -1;
+    label next = -1;
     if (celli >= 0)
     {
-        return insideAny_[celli];
+        inside = insideOf_[celli];
+        next = nextTo_[celli];
     }
-    const fvPatch& fp = mesh_.boundary()[face.first()];
-    if (!fp.coupled())
+    else
     {
-        return false;
+        const fvPatch& fp = mesh_.boundary()[face.first()];
+        if (!fp.coupled())
+        {
+            return true;
+        }
+        const label bFacei = fp.start() + face.second() - mesh_.nInternalFaces();
+        const bool second = celli == secondLayerSample;
+        inside = second ? insideSecondLayer_[bFacei] : insideAcross_[bFacei];
+        next = second ? nextToSecondLayer_[bFacei] : nextToAcross_[bFacei];
     }
-    const label bFacei = fp.start() + face.second() - mesh_.nInternalFaces();
-    return
-        celli == secondLayerSample
-      ? insideSecondLayer_[bFacei]
-      : insideAcross_[bFacei];
+    return inside < 0 && (next == -1 || next == body);
 }
 
 
@@ -329,6 +367,7 @@ void Foam::fv::rigidProjection::findRegion(const label i)
     const dlmParticleCloud& cloud =
         mesh_.lookupObject<dlmParticleCloud>("particles");
     const dlmParticle& p = cloud.particles()[i];
+    const label body = cloud.source(i);
     const particleShape& shape = p.shape();
     const point& X = p.position();
     const tensor Rt(p.R().T());
@@ -469,7 +508,7 @@ void Foam::fv::rigidProjection::findRegion(const label i)
                 if
                 (
                     !cand.inside
-                 && !sampleInside(cand.celli, cand.face)
+                 && sampleUsable(body, cand.celli, cand.face)
                  && c < cosOut
                 )
                 {
@@ -512,9 +551,10 @@ void Foam::fv::rigidProjection::findRegion(const label i)
                     quadratic = true;
                 }
             }
-            // Two fluid cells between surfaces: forced towards each other
-            // they would block the gap, so leave the line to the flow
-            if (quadratic && sampleInside(out2Cell, out2Face))
+            // Two or three fluid cells between surfaces: forced towards
+            // each other they would block the gap, so leave the line to the
+            // flow
+            if (quadratic && !sampleUsable(body, out2Cell, out2Face))
             {
                 continue;
             }
@@ -882,9 +922,12 @@ Foam::fv::rigidProjection::rigidProjection
     heldForce_(force_.primitiveField()),
     inside_(mesh.nCells(), false),
     regionOwner_(mesh.nCells(), -1),
-    insideAny_(mesh.nCells(), 0),
-    insideAcross_(mesh.nBoundaryFaces(), 0),
-    insideSecondLayer_(mesh.nBoundaryFaces(), 0),
+    insideOf_(mesh.nCells(), -1),
+    insideAcross_(mesh.nBoundaryFaces(), -1),
+    insideSecondLayer_(mesh.nBoundaryFaces(), -1),
+    nextTo_(mesh.nCells(), -1),
+    nextToAcross_(mesh.nBoundaryFaces(), -1),
+    nextToSecondLayer_(mesh.nBoundaryFaces(), -1),
     coupledDeltas_(mesh.boundary().size()),
     secondLayerCell_(mesh.nBoundaryFaces(), -1),
     secondLayerDelta_(mesh.nBoundaryFaces(), Zero),
