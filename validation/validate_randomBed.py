@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""Random bed against Ergun, the DLM paper's section 3.1: 100 fixed spheres
+of radius 0.11283 m at porosity 40 % (dlmPackSpheres, seed 1) in a periodic
+cube of side 1 m, driven to the superficial velocity 0.008 m/s
+(tutorials/randomBed) at Re = D u/(nu (1 - eps)) = 900. The paper reports 7 %
+from Ergun's Lambda = 150 + 1.75 Re for its converged solution; the target
+here is 5 %.
+
+For each resolution (cells per diameter): Lambda = G eps^3 D^2/((1 - eps)^2
+mu u) (its eq. 25), G the particles' drag per unit volume (packedBed)
+averaged over the last quarter of the run, its difference from Ergun, the
+drift over that window, wall time and steps; then the observed order and
+the Richardson extrapolate of the three finest resolutions. Rows are merged
+into results/randomBed.csv; results/randomBed.png plots Lambda against
+resolution and the error (against the extrapolate and against Ergun)
+against wall time.
+
+    validation/validate_randomBed.py [--re 900] [--end-time 80] [N ...]
+        (default N = 8 12 16 20)
+"""
+
+import argparse
+import re
+
+import numpy as np
+
+from common import (Case, RESULTS, ROOT, RUNS, foam_environment, plot_speed_error,
+                    timed_run, write_table)
+from validate_ergun import three_point_order
+
+TABLE = RESULTS / "randomBed.csv"
+HEADER = ["Re", "cellsPerDiameter", "porosity", "Lambda", "Lambda_Ergun",
+          "relErrorErgun", "drift", "wallTime_s", "steps"]
+
+
+def ergun(re_number):
+    return 150 + 1.75*re_number
+
+
+def run(re_number, n, end_time, env):
+    case = Case.copy(ROOT / "tutorials" / "randomBed",
+                     RUNS / f"randomBed_{re_number:g}_{n}", env)
+    controls = case.path / "system" / "controlDict"
+    text = re.sub(r"^endTime .*$", f"endTime         {end_time:g};",
+                  controls.read_text(), flags=re.M)
+    controls.write_text(re.sub(r"^writeInterval .*$", f"writeInterval   {end_time:g};",
+                               text, flags=re.M))
+    seconds = timed_run(case, "./Allrun", re_number, n)
+    log = (case.path / "log.pimpleDLMFoam").read_text()
+    steps = len(re.findall(r"^Time = ", log, re.M))
+    text = (case.path / "postProcessing" / "bed" / "0" / "packedBed.dat").read_text()
+    rows = np.array([[float(v) for v in line.split()]
+                     for line in text.splitlines()
+                     if line.strip() and not line.startswith("#")])
+    window = rows[rows[:, 0] >= 0.75*rows[-1, 0]]
+    lam = window[:, 6]
+    return rows[-1, 2], rows[-1, 5], lam.mean(), (lam.max() - lam.min())/lam.mean(), \
+        seconds, steps
+
+
+def stored_rows():
+    if not TABLE.exists():
+        return []
+    return [[float(v) for v in line.split(",")]
+            for line in TABLE.read_text().splitlines()[1:]]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--re", type=float, default=900)
+    parser.add_argument("--end-time", type=float, default=80,
+                        help="flow time [s]; steady after about 30 s")
+    parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16, 20])
+    args = parser.parse_args()
+
+    env = foam_environment()
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    for n in args.resolutions:
+        eps, re_bed, lam, drift, seconds, steps = run(args.re, n, args.end_time, env)
+        rows = [r for r in stored_rows() if (r[0], r[1]) != (args.re, n)]
+        rows.append([args.re, n, eps, lam, ergun(re_bed), lam/ergun(re_bed) - 1,
+                     drift, seconds, steps])
+        rows.sort()
+        write_table(TABLE, HEADER, rows)
+        print(f"Re={args.re:g} N={n:3d} porosity={eps:.4f} Lambda={lam:.1f} "
+              f"Ergun={ergun(re_bed):.1f} ({100*(lam/ergun(re_bed) - 1):+.1f}%) "
+              f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
+    summarise()
+
+
+def summarise():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = stored_rows()
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    series = {}
+    for re_number in sorted({r[0] for r in rows}):
+        sel = sorted((r for r in rows if r[0] == re_number), key=lambda r: r[1])
+        n = np.array([r[1] for r in sel])
+        lam = np.array([r[3] for r in sel])
+        reference = sel[-1][4]
+        if len(n) >= 3:
+            order = three_point_order(n[-3:], lam[-3:])
+            extrapolate = lam[-1] + (lam[-1] - lam[-2])/((n[-1]/n[-2])**order - 1)
+        else:
+            order, extrapolate = float("nan"), lam[-1]
+        print(f"Re={re_number:g}: Lambda {', '.join(f'{v:.1f}' for v in lam)} at N = "
+              f"{', '.join(str(int(v)) for v in n)}; observed order {order:.2f}, "
+              f"extrapolate {extrapolate:.1f} (Ergun {reference:.1f}, "
+              f"{100*(extrapolate/reference - 1):+.1f}%)")
+        axes[0].plot(n, lam, "o-", label=f"Re {re_number:g} (order {order:.2f})")
+        axes[0].axhline(reference, ls="--", lw=0.8, color="k", label=f"Ergun, Re {re_number:g}")
+        if np.isfinite(extrapolate):
+            axes[0].axhline(extrapolate, ls=":", lw=0.8, color="C1",
+                            label="Richardson extrapolate")
+        series[f"Re {re_number:g}, against the extrapolate"] = \
+            [(r[7], abs(r[3]/extrapolate - 1), int(r[1])) for r in sel]
+        series[f"Re {re_number:g}, against Ergun"] = \
+            [(r[7], abs(r[5]), int(r[1])) for r in sel]
+    axes[0].set_xlabel("cells per diameter")
+    axes[0].set_ylabel("Lambda")
+    axes[0].set_title("Random bed, porosity 40 %")
+    axes[0].legend(fontsize=7)
+    plot_speed_error(axes[1], series, target=5)
+    axes[1].set_title("Error against wall time")
+    fig.tight_layout()
+    fig.savefig(RESULTS / "randomBed.png", dpi=120)
+
+
+if __name__ == "__main__":
+    main()
