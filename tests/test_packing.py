@@ -90,6 +90,26 @@ solidFraction {fraction};
     assert any(line.startswith("# smallest gap / diameter") for line in header)
 
 
+def test_periodic_packing_at_064_near_random_close_packing(tmp_path, foam_env):
+    """The anisotropic beds start from porosity 36 %: 106 spheres at 0.638,
+    above the 0.62 that relaxing random centres reaches, through the Monte
+    Carlo compression; no two spheres overlap."""
+    lower, upper, radius = (0, 0, 0), (1, 1, 1), 0.11283
+    case = pack_case(tmp_path / "case", foam_env, f"""
+box ({' '.join(map(str, lower))}) ({' '.join(map(str, upper))});
+periodic (yes yes yes);
+radius {radius};
+solidFraction 0.64;
+""")
+    case.run("dlmPackSpheres")
+    centres, _ = read_packing(case.path / "constant" / "packing.dat")
+    assert len(centres) == 106
+    assert len(centres)*4/3*math.pi*radius**3 == pytest.approx(0.6378, abs=1e-4)
+    assert smallest_distance(centres, lower, upper, (True,) * 3) \
+        >= 2 * radius * (1 - 1e-12)
+    assert np.all(centres >= lower) and np.all(centres < upper)
+
+
 def test_walls_in_z_at_050(tmp_path, foam_env):
     # A box off the origin: wrapping and wall distances are relative to it
     lower, upper, radius = (-0.004, 0.002, 0.001), (0.004, 0.010, 0.009), 0.0006
