@@ -1,0 +1,228 @@
+#!/usr/bin/env python3
+"""Anisotropic beds, the DLM paper's section 3.2 and appendix: from a
+random packing of porosity 36 % (106 spheres of radius 0.11283 m in a
+periodic cube of side 1 m, dlmPackSpheres), spheres are removed from a band
+0.3 m wide until the bed holds as many as a uniform packing of porosity
+42 % (10 of 106), which leaves the band near 56 %:
+
+- configuration 1: the band along the flow (x), across y: the layers
+  (0.7 m at 36 %, 0.3 m at 56 %) are in parallel;
+- configuration 2: the band across the flow: the layers are in series.
+
+Both are compared with uniform random packings of porosity 42 % and 36 %,
+all driven to the superficial velocity u = 0.008 m/s along x by
+meanVelocityForce (tutorials/randomBed), and with Ergun's estimates for
+each layer structure (reference README section 5): in parallel the layers
+share the pressure gradient and split the flow, u = 0.7 u1 + 0.3 u2; in
+series they share the velocity and add their pressure drops. The layer
+porosities are those of the packings (exact sphere-slab volumes).
+
+The fluid is the same in every bed: rho 1000 kg/m^3 and the viscosity that
+gives Re = D u/(nu (1 - eps)) = 100 in the uniform 42 % bed, where Ergun's
+viscous and inertial terms are comparable. Each run reports the pressure
+drop over the 1 m bed (the particles' drag per unit volume, averaged over
+the last quarter of the run) divided by the density, as the paper does,
+and its wall time. Rows are merged into results/anisotropicBed.csv;
+results/anisotropicBed.png plots the pressure drops against resolution
+beside the Ergun estimates.
+
+    validation/validate_anisotropicBed.py [--end-time 80] [N ...]
+        (default N = 8 12 16)
+"""
+
+import argparse
+import math
+import re
+
+import numpy as np
+
+from common import (Case, RESULTS, ROOT, RUNS, foam_environment, timed_run,
+                    write_table)
+
+TABLE = RESULTS / "anisotropicBed.csv"
+HEADER = ["bed", "cellsPerDiameter", "porosity", "pressureDrop_m2s2",
+          "ergun_m2s2", "relDiffErgun", "drift", "wallTime_s", "steps"]
+
+RADIUS, D, U, L, RHO = 0.11283, 2*0.11283, 0.008, 1.0, 1000.0
+NU = D*U/(100*(1 - 0.42))
+BAND = (0.7, 1.0)           # the depleted band, 0.3 m wide
+BEDS = ["uniform36", "uniform42", "parallel", "series"]
+
+
+def ergun_gradient(eps, u):
+    """Ergun's pressure gradient over the density [m/s^2]."""
+    return (150*NU*(1 - eps)**2*u/(eps**3*D**2)
+            + 1.75*(1 - eps)*u**2/(eps**3*D))
+
+
+def slab_volume(centres, axis, lower, upper):
+    """Volume of the spheres inside lower <= x[axis] < upper, periodic with
+    period L (spherical caps)."""
+    def below(h):
+        # Volume of a sphere below a plane at height h above its centre
+        h = np.clip(h, -RADIUS, RADIUS)
+        cap = math.pi*(RADIUS - h)**2*(2*RADIUS + h)/3
+        return 4/3*math.pi*RADIUS**3 - cap
+
+    total = 0.0
+    for shift in (-L, 0.0, L):
+        c = centres[:, axis] + shift
+        total += np.sum(below(upper - c) - below(lower - c))
+    return total
+
+
+def pack(fraction, env):
+    """A periodic random packing at the solid fraction (seed 1): centres."""
+    case = Case.copy(ROOT / "tutorials" / "randomBed", RUNS / f"pack_{fraction:g}", env)
+    settings = case.path / "system" / "packSpheresDict"
+    settings.write_text(re.sub(r"^solidFraction .*$", f"solidFraction   {fraction};",
+                               settings.read_text(), flags=re.M))
+    case.run("dlmPackSpheres")
+    return np.loadtxt(case.path / "constant" / "packing.dat", comments="#")[:, :3]
+
+
+def deplete(centres, axis, count):
+    """Remove spheres centred in the band, in a seeded random order, until
+    count are left."""
+    rng = np.random.default_rng(1)
+    in_band = np.flatnonzero((centres[:, axis] >= BAND[0]) & (centres[:, axis] < BAND[1]))
+    keep = np.ones(len(centres), bool)
+    keep[rng.permutation(in_band)[:len(centres) - count]] = False
+    return centres[keep]
+
+
+def layered_ergun(centres, axis, series):
+    """Ergun's estimate for the two layers of the bed: the band and the
+    rest, with their porosities from the packing."""
+    band_width = BAND[1] - BAND[0]
+    eps2 = 1 - slab_volume(centres, axis, *BAND)/(band_width*L*L)
+    eps1 = 1 - (slab_volume(centres, axis, 0, BAND[0]))/(BAND[0]*L*L)
+    if series:
+        return BAND[0]*ergun_gradient(eps1, U) + band_width*ergun_gradient(eps2, U)
+    # Parallel: the same gradient in both layers; bisect on u1
+    lo, hi = 0.0, U/BAND[0]
+    for _ in range(200):
+        u1 = 0.5*(lo + hi)
+        g = ergun_gradient(eps1, u1)
+        # u2 from g in layer 2: Ergun is increasing in u, bisect again
+        a, b = 0.0, 100*U
+        for _ in range(200):
+            u2 = 0.5*(a + b)
+            a, b = (u2, b) if ergun_gradient(eps2, u2) < g else (a, u2)
+        lo, hi = (u1, hi) if BAND[0]*u1 + band_width*u2 < U else (lo, u1)
+    return ergun_gradient(eps1, 0.5*(lo + hi))
+
+
+def beds(env):
+    """Particle centres and the Ergun estimate of each bed."""
+    dense = pack(0.64, env)
+    loose = pack(0.58, env)
+    # As many spheres as the uniform 42 % bed: the same porosity
+    parallel = deplete(dense, 1, len(loose))
+    series = deplete(dense, 0, len(loose))
+    volume = 4/3*math.pi*RADIUS**3
+    return {
+        "uniform36": (dense, ergun_gradient(1 - len(dense)*volume/L**3, U)*L),
+        "uniform42": (loose, ergun_gradient(1 - len(loose)*volume/L**3, U)*L),
+        "parallel": (parallel, layered_ergun(parallel, 1, series=False)*L),
+        "series": (series, layered_ergun(series, 0, series=True)*L),
+    }
+
+
+def run(name, centres, n, end_time, env):
+    case = Case.copy(ROOT / "tutorials" / "randomBed", RUNS / f"anisotropic_{name}_{n}", env)
+    path = case.path
+    with open(path / "constant" / "packing.dat", "w") as out:
+        out.write(f"# {name}: {len(centres)} spheres\n")
+        for c in centres:
+            out.write(f"{c[0]!r} {c[1]!r} {c[2]!r} {RADIUS!r}\n")
+
+    def substitute(relative, pattern, value):
+        f = path / relative
+        f.write_text(re.sub(pattern, value, f.read_text(), flags=re.M))
+
+    substitute("constant/transportProperties", r"^nu .*$", f"nu              {NU:.8g};")
+    substitute("system/blockMeshDict", r"^n .*$", f"n   {round(n*L/D)};")
+    substitute("system/controlDict", r"^endTime .*$", f"endTime         {end_time:g};")
+    substitute("system/controlDict", r"^writeInterval .*$", f"writeInterval   {end_time:g};")
+    case.run("blockMesh")
+    seconds = timed_run(case, "pimpleDLMFoam")
+    log = (path / "log.pimpleDLMFoam").read_text()
+    steps = len(re.findall(r"^Time = ", log, re.M))
+    text = (path / "postProcessing" / "bed" / "0" / "packedBed.dat").read_text()
+    rows = np.array([[float(v) for v in line.split()]
+                     for line in text.splitlines()
+                     if line.strip() and not line.startswith("#")])
+    window = rows[rows[:, 0] >= 0.75*rows[-1, 0], 3]/RHO*L
+    return rows[-1, 2], window.mean(), (window.max() - window.min())/window.mean(), \
+        seconds, steps
+
+
+def stored_rows():
+    if not TABLE.exists():
+        return []
+    rows = []
+    for line in TABLE.read_text().splitlines()[1:]:
+        values = line.split(",")
+        rows.append([values[0]] + [float(v) for v in values[1:]])
+    return rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--end-time", type=float, default=80)
+    parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16])
+    args = parser.parse_args()
+
+    env = foam_environment()
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    packings = beds(env)
+    for name in BEDS:
+        centres, estimate = packings[name]
+        print(f"{name}: {len(centres)} spheres, Ergun estimate {estimate:.5f} m^2/s^2",
+              flush=True)
+    for n in args.resolutions:
+        for name in BEDS:
+            centres, estimate = packings[name]
+            eps, drop, drift, seconds, steps = run(name, centres, n, args.end_time, env)
+            rows = [r for r in stored_rows() if (r[0], r[1]) != (name, n)]
+            rows.append([name, n, eps, drop, estimate, drop/estimate - 1, drift,
+                         seconds, steps])
+            rows.sort(key=lambda r: (BEDS.index(r[0]), r[1]))
+            write_table(TABLE, HEADER, rows)
+            print(f"{name:10s} N={n:3d} porosity={eps:.4f} dp/rho={drop:.5f} m^2/s^2 "
+                  f"Ergun {estimate:.5f} ({100*(drop/estimate - 1):+.1f}%) "
+                  f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
+    summarise()
+
+
+def summarise():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = stored_rows()
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    for k, name in enumerate(BEDS):
+        sel = sorted((r for r in rows if r[0] == name), key=lambda r: r[1])
+        if not sel:
+            continue
+        n = [r[1] for r in sel]
+        axes[0].plot(n, [r[3] for r in sel], "o-", color=f"C{k}", label=name)
+        axes[0].axhline(sel[-1][4], ls="--", lw=0.8, color=f"C{k}")
+        axes[1].plot(n, [r[3]/next(q[3] for q in rows if q[0] == "uniform42"
+                                     and q[1] == r[1]) for r in sel],
+                     "o-", color=f"C{k}", label=name)
+    axes[0].set_xlabel("cells per diameter")
+    axes[0].set_ylabel("pressure drop / density [m^2/s^2]")
+    axes[0].set_title("Anisotropic beds (dashed: Ergun estimates)")
+    axes[0].legend(fontsize=7)
+    axes[1].set_xlabel("cells per diameter")
+    axes[1].set_ylabel("pressure drop / uniform 42 %")
+    axes[1].set_title("Relative to the uniform 42 % bed")
+    axes[1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(RESULTS / "anisotropicBed.png", dpi=120)
+
+
+if __name__ == "__main__":
+    main()
