@@ -78,6 +78,27 @@ def test_disk_on_a_3d_mesh(meshed, tmp_path):
     assert "Particle coin" in log and "2D but the mesh is 3D" in log
 
 
+@pytest.mark.parametrize("lines, expected", [
+    # A value that is not a number (here Python's repr of a numpy float)
+    ("np.float64(0.015) 0.015 0.025 0.005\n",
+     ["packing.dat\", line 2", "expected 'x y z radius'", "np.float64"]),
+    ("0.015 0.015 0.025\n", ["packing.dat\", line 2", "expected 'x y z radius'"]),
+    ("# comments and blank lines only\n\n", ["packing.dat", "holds no particles"]),
+])
+def test_bad_particle_file(meshed, tmp_path, lines, expected):
+    """A particle file line that does not read as 'x y z radius' is an
+    error naming the file and the line, not skipped; a file without any
+    particle is an error too."""
+    def edit(case):
+        (case.path / "constant" / "packing.dat").write_text("# x y z radius\n" + lines)
+        (case.path / "constant" / "particleProperties").write_text(
+            HEADER + 'particleFile "constant/packing.dat";\n'
+            "particleFileDefaults { shape sphere; density 2000; }\n")
+    log = run_with(meshed, tmp_path, None, edit=edit)
+    for text in expected:
+        assert text in log, f"'{text}' missing from:\n{log[-2000:]}"
+
+
 def test_unknown_top_level_keyword(meshed, tmp_path):
     def edit(case):
         path = case.path / "constant" / "particleProperties"

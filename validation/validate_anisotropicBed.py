@@ -135,7 +135,7 @@ def run(name, centres, n, end_time, env):
     with open(path / "constant" / "packing.dat", "w") as out:
         out.write(f"# {name}: {len(centres)} spheres\n")
         for c in centres:
-            out.write(f"{c[0]!r} {c[1]!r} {c[2]!r} {RADIUS!r}\n")
+            out.write(" ".join(repr(float(v)) for v in (*c, RADIUS)) + "\n")
 
     def substitute(relative, pattern, value):
         f = path / relative

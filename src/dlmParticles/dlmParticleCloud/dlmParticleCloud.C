@@ -77,14 +77,14 @@ void Foam::dlmParticleCloud::readParticleFile()
         {
             line.erase(hash);
         }
-        std::istringstream iss(line);
-        scalar x, y, z, radius;
-        if (!(iss >> x))
+        if (line.find_first_not_of(" \t\r") == std::string::npos)
         {
             continue;
         }
+        std::istringstream iss(line);
+        scalar x, y, z, radius;
         std::string rest;
-        if (!(iss >> y >> z >> radius) || (iss >> rest))
+        if (!(iss >> x >> y >> z >> radius) || (iss >> rest))
         {
             FatalErrorInFunction
                 << file << ", line " << lineNo << ": expected 'x y z radius'"
@@ -101,6 +101,12 @@ void Foam::dlmParticleCloud::readParticleFile()
         ++nRead;
     }
 
+    if (nRead == 0)
+    {
+        FatalErrorInFunction
+            << "particleFile " << file << " holds no particles (lines"
+            << " 'x y z radius')" << exit(FatalError);
+    }
     Info<< "Read " << nRead << " particles from " << file << endl;
 }
 
