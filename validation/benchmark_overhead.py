@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Cost of the particle work: time per step of pimpleDLMFoam against stock
 pimpleFoam on the same mesh (48^3 cells) and PIMPLE settings, with 0, 10 and
-100 free spheres of 6 cells per diameter. Reports the ratio of the times per
+100 free spheres of 6 cells per diameter, and 100 fixed ones (a fixed bed:
+no fractions, momentum integrals or forced-cell search after the first
+step). Reports the ratio of the times per
 step, and the share of the particle work (fractions, projection, motion,
 output) that pimpleDLMFoam measures itself, so the pressure solver's extra
 work in a flow disturbed by particles is not counted as particle work.
@@ -30,7 +32,7 @@ def write(path, cls, obj, body):
     path.write_text(HEADER.format(cls=cls, obj=obj) + body)
 
 
-def make_case(name, solver, n_particles, steps, env):
+def make_case(name, solver, n_particles, steps, env, motion="free"):
     case = Case.copy(ROOT / "tests" / "cases" / "sphereBox", RUNS / name, env)
     p = case.path
     write(p / "system/blockMeshDict", "dictionary", "blockMeshDict", f"""
@@ -82,7 +84,8 @@ boundary
                         break
                     x, y, z = ((i + 1)*spacing, (j + 1)*spacing, (k + 1)*spacing)
                     body += (f"    p{count} {{ shape sphere; radius {RADIUS}; "
-                             f"density 1000; position ({x} {y} {z}); }}\n")
+                             f"density 1000; position ({x} {y} {z}); "
+                             f"motion {motion}; }}\n")
                     count += 1
         write(p / "constant/particleProperties", "dictionary",
               "particleProperties", body + "}\n")
@@ -110,17 +113,19 @@ def main():
     base = make_case("bench_pimpleFoam", "pimpleFoam", 0, steps, env)
     reference = time_per_step(base.run("pimpleFoam").log)
     print(f"pimpleFoam: {reference:.4f} s/step")
-    rows = [["pimpleFoam", 0, reference, 1.0, 0.0]]
-    for n in (0, 10, 100):
-        case = make_case(f"bench_dlm_{n}", "pimpleDLMFoam", n, steps, env)
+    rows = [["pimpleFoam", 0, "", reference, 1.0, 0.0]]
+    for n, motion in ((0, "free"), (10, "free"), (100, "free"), (100, "fixed")):
+        case = make_case(f"bench_dlm_{n}_{motion}", "pimpleDLMFoam", n, steps, env,
+                         motion)
         log = case.run("pimpleDLMFoam").log
         t = time_per_step(log)
         share = particle_share(log)
-        rows.append(["pimpleDLMFoam", n, t, t/reference, share])
-        print(f"pimpleDLMFoam, {n:3d} particles: {t:.4f} s/step, "
-              f"ratio {t/reference:.3f}, particle work {100*share:.1f} % of the run")
+        rows.append(["pimpleDLMFoam", n, motion, t, t/reference, share])
+        print(f"pimpleDLMFoam, {n:3d} {motion} particles: {t:.4f} s/step, "
+              f"ratio {t/reference:.3f}, particle work {100*share:.1f} % of the run "
+              f"({share*t:.4f} s/step)")
     write_table(RESULTS / "benchmark_overhead.csv",
-                ["solver", "particles", "secondsPerStep", "ratioToPimpleFoam",
+                ["solver", "particles", "motion", "secondsPerStep", "ratioToPimpleFoam",
                  "particleWorkShare"], rows)
 
 
