@@ -65,3 +65,61 @@ def plot_speed_error(ax, series, target=None):
     ax.set_xlabel("wall time [s]")
     ax.set_ylabel("|error| [%]")
     ax.legend()
+
+
+def packed_bed_rows(case_path, name="bed"):
+    """Rows of a packedBed function object's output: t u eps G_drag
+    G_patches Re Lambda Lambda_Ergun dragPerParticle F/Fs."""
+    import numpy as np
+    text = (case_path / "postProcessing" / name / "0" / "packedBed.dat").read_text()
+    return np.array([[float(v) for v in line.split()]
+                     for line in text.splitlines()
+                     if line.strip() and not line.startswith("#")])
+
+
+def ergun_lambda(re_number):
+    """Ergun's friction coefficient, Lambda = 150 + 1.75 Re."""
+    return 150 + 1.75*re_number
+
+
+def stored_rows(path):
+    """Numeric rows of a results CSV (none if it does not exist)."""
+    if not path.exists():
+        return []
+    return [[float(v) for v in line.split(",")]
+            for line in path.read_text().splitlines()[1:]]
+
+
+def three_point_order(n, f):
+    """Order p of f(h) = f0 + C h^p through three resolutions n (cells per
+    diameter), by bisection on the ratio of the differences; nan if the
+    differences change sign."""
+    import numpy as np
+    h = 1/np.asarray(n, float)
+    d1, d2 = f[1] - f[0], f[2] - f[1]
+    if d1 == 0 or d2/d1 <= 0:
+        return float("nan")
+    target = d2/d1
+
+    def ratio(p):
+        return (h[2]**p - h[1]**p)/(h[1]**p - h[0]**p)
+
+    lo, hi = 0.05, 8.0
+    for _ in range(200):
+        mid = 0.5*(lo + hi)
+        if (ratio(mid) - target)*(ratio(lo) - target) > 0:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5*(lo + hi)
+
+
+def richardson(n, f):
+    """Observed order and extrapolate of the three finest resolutions (nan,
+    and the finest value, with fewer than three or no monotonic trend)."""
+    if len(n) < 3:
+        return float("nan"), f[-1]
+    order = three_point_order(n[-3:], f[-3:])
+    if order != order:
+        return order, f[-1]
+    return order, f[-1] + (f[-1] - f[-2])/((n[-1]/n[-2])**order - 1)

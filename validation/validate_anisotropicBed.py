@@ -36,8 +36,8 @@ import re
 
 import numpy as np
 
-from common import (Case, RESULTS, ROOT, RUNS, foam_environment, timed_run,
-                    write_table)
+from common import (Case, RESULTS, ROOT, RUNS, foam_environment, packed_bed_rows,
+                    timed_run, write_table)
 
 TABLE = RESULTS / "anisotropicBed.csv"
 HEADER = ["bed", "cellsPerDiameter", "porosity", "pressureDrop_m2s2",
@@ -149,10 +149,7 @@ def run(name, centres, n, end_time, env):
     seconds = timed_run(case, "pimpleDLMFoam")
     log = (path / "log.pimpleDLMFoam").read_text()
     steps = len(re.findall(r"^Time = ", log, re.M))
-    text = (path / "postProcessing" / "bed" / "0" / "packedBed.dat").read_text()
-    rows = np.array([[float(v) for v in line.split()]
-                     for line in text.splitlines()
-                     if line.strip() and not line.startswith("#")])
+    rows = packed_bed_rows(path)
     window = rows[rows[:, 0] >= 0.75*rows[-1, 0], 3]/RHO*L
     return rows[-1, 2], window.mean(), (window.max() - window.min())/window.mean(), \
         seconds, steps

@@ -33,7 +33,8 @@ import re
 
 import numpy as np
 
-from common import (Case, RESULTS, ROOT, RUNS, foam_environment, plot_speed_error,
+from common import (Case, RESULTS, ROOT, RUNS, ergun_lambda, foam_environment,
+                    packed_bed_rows, plot_speed_error, richardson, stored_rows,
                     timed_run, write_table)
 
 TABLE = RESULTS / "ergun.csv"
@@ -44,10 +45,6 @@ D, U = 0.004, 0.5
 EPS = 1 - math.pi/6
 K_ZICK_HOMSY = 42.1
 LAMBDA_STOKES = 3*math.pi*K_ZICK_HOMSY*EPS**3/(1 - EPS)**2
-
-
-def ergun(re_number):
-    return 150 + 1.75*re_number
 
 
 def franzen(re_number):
@@ -112,20 +109,10 @@ def run(re_number, n, env):
     seconds = timed_run(case, "./Allrun", math.pi/6, n)
     log = (case.path / "log.pimpleDLMFoam").read_text()
     steps = len(re.findall(r"^Time = ", log, re.M))
-    text = (case.path / "postProcessing" / "bed" / "0" / "packedBed.dat").read_text()
-    rows = np.array([[float(v) for v in line.split()]
-                     for line in text.splitlines()
-                     if line.strip() and not line.startswith("#")])
+    rows = packed_bed_rows(case.path)
     window = rows[rows[:, 0] >= 0.8*rows[-1, 0]]
     lam = window[:, 6]
     return lam.mean(), (lam.max() - lam.min())/lam.mean(), seconds, steps
-
-
-def stored_rows():
-    if not TABLE.exists():
-        return []
-    return [[float(v) for v in line.split(",")]
-            for line in TABLE.read_text().splitlines()[1:]]
 
 
 def main():
@@ -139,16 +126,16 @@ def main():
     for re_number in [float(r) for r in args.re.split(",")]:
         for n in args.resolutions:
             lam, drift, seconds, steps = run(re_number, n, env)
-            rows = [r for r in stored_rows() if (r[0], r[1]) != (re_number, n)]
-            rows.append([re_number, n, lam, ergun(re_number), lam/ergun(re_number) - 1,
+            rows = [r for r in stored_rows(TABLE) if (r[0], r[1]) != (re_number, n)]
+            rows.append([re_number, n, lam, ergun_lambda(re_number), lam/ergun_lambda(re_number) - 1,
                          franzen(re_number), lam/franzen(re_number) - 1, drift,
                          seconds, steps])
             rows.sort()
             write_table(TABLE, HEADER, rows)
             extra = (f" Zick&Homsy {LAMBDA_STOKES:.1f} ({100*(lam/LAMBDA_STOKES - 1):+.2f}%)"
                      if re_number < 1 else "")
-            print(f"Re={re_number:g} N={n:3d} Lambda={lam:.2f} Ergun={ergun(re_number):.1f} "
-                  f"({100*(lam/ergun(re_number) - 1):+.1f}%) Franzen={franzen(re_number):.1f} "
+            print(f"Re={re_number:g} N={n:3d} Lambda={lam:.2f} Ergun={ergun_lambda(re_number):.1f} "
+                  f"({100*(lam/ergun_lambda(re_number) - 1):+.1f}%) Franzen={franzen(re_number):.1f} "
                   f"({100*(lam/franzen(re_number) - 1):+.1f}%){extra} drift={100*drift:.2f}% "
                   f"wall={seconds:.0f}s steps={steps}", flush=True)
     summarise()
@@ -158,7 +145,7 @@ def summarise():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = stored_rows()
+    rows = stored_rows(TABLE)
     fig, axes = plt.subplots(1, 3, figsize=(15, 4))
     series = {}
     for re_number in sorted({r[0] for r in rows}):
@@ -166,19 +153,15 @@ def summarise():
         n = np.array([r[1] for r in sel])
         lam = np.array([r[2] for r in sel])
         reference = LAMBDA_STOKES if re_number < 1 else None
-        if len(n) >= 3:
-            order = three_point_order(n[-3:], lam[-3:])
-            extrapolate = lam[-1] + (lam[-1] - lam[-2])/((n[-1]/n[-2])**order - 1)
-        else:
-            order, extrapolate = float("nan"), lam[-1]
+        order, extrapolate = richardson(n, lam)
         target = reference if reference is not None else extrapolate
         print(f"Re={re_number:g}: Lambda {', '.join(f'{v:.1f}' for v in lam)} at N = "
               f"{', '.join(str(int(v)) for v in n)}; observed order {order:.2f}, "
-              f"extrapolate {extrapolate:.1f} (Ergun {ergun(re_number):.1f}, "
-              f"{100*(extrapolate/ergun(re_number) - 1):+.1f}%)")
+              f"extrapolate {extrapolate:.1f} (Ergun {ergun_lambda(re_number):.1f}, "
+              f"{100*(extrapolate/ergun_lambda(re_number) - 1):+.1f}%)")
         ax = axes[0] if re_number < 100 else axes[1]
         ax.plot(n, lam, "o-", label=f"Re {re_number:g} (order {order:.2f})")
-        ax.axhline(ergun(re_number), ls="--", lw=0.8, color=ax.lines[-1].get_color(),
+        ax.axhline(ergun_lambda(re_number), ls="--", lw=0.8, color=ax.lines[-1].get_color(),
                    label=f"Ergun, Re {re_number:g}")
         if reference is not None:
             ax.axhline(reference, ls=":", lw=0.8, color="k", label="Zick & Homsy (Stokes)")
@@ -194,28 +177,6 @@ def summarise():
     axes[2].set_title("Error against the exact (Re 0.1) or extrapolated value")
     fig.tight_layout()
     fig.savefig(RESULTS / "ergun.png", dpi=120)
-
-
-def three_point_order(n, f):
-    """Order p of f(h) = f0 + C h^p through three resolutions n (cells per
-    diameter), by bisection on the ratio of the differences."""
-    h = 1/np.asarray(n, float)
-    d1, d2 = f[1] - f[0], f[2] - f[1]
-    if d1 == 0 or d2/d1 <= 0:
-        return float("nan")
-    target = d2/d1
-
-    def ratio(p):
-        return (h[2]**p - h[1]**p)/(h[1]**p - h[0]**p)
-
-    lo, hi = 0.05, 8.0
-    for _ in range(200):
-        mid = 0.5*(lo + hi)
-        if (ratio(mid) - target)*(ratio(lo) - target) > 0:
-            lo = mid
-        else:
-            hi = mid
-    return 0.5*(lo + hi)
 
 
 if __name__ == "__main__":

@@ -24,17 +24,13 @@ import re
 
 import numpy as np
 
-from common import (Case, RESULTS, ROOT, RUNS, foam_environment, plot_speed_error,
+from common import (Case, RESULTS, ROOT, RUNS, ergun_lambda, foam_environment,
+                    packed_bed_rows, plot_speed_error, richardson, stored_rows,
                     timed_run, write_table)
-from validate_ergun import three_point_order
 
 TABLE = RESULTS / "randomBed.csv"
 HEADER = ["Re", "cellsPerDiameter", "porosity", "Lambda", "Lambda_Ergun",
           "relErrorErgun", "drift", "wallTime_s", "steps"]
-
-
-def ergun(re_number):
-    return 150 + 1.75*re_number
 
 
 def run(re_number, n, end_time, env):
@@ -48,21 +44,11 @@ def run(re_number, n, end_time, env):
     seconds = timed_run(case, "./Allrun", re_number, n)
     log = (case.path / "log.pimpleDLMFoam").read_text()
     steps = len(re.findall(r"^Time = ", log, re.M))
-    text = (case.path / "postProcessing" / "bed" / "0" / "packedBed.dat").read_text()
-    rows = np.array([[float(v) for v in line.split()]
-                     for line in text.splitlines()
-                     if line.strip() and not line.startswith("#")])
+    rows = packed_bed_rows(case.path)
     window = rows[rows[:, 0] >= 0.75*rows[-1, 0]]
     lam = window[:, 6]
     return rows[-1, 2], rows[-1, 5], lam.mean(), (lam.max() - lam.min())/lam.mean(), \
         seconds, steps
-
-
-def stored_rows():
-    if not TABLE.exists():
-        return []
-    return [[float(v) for v in line.split(",")]
-            for line in TABLE.read_text().splitlines()[1:]]
 
 
 def main():
@@ -77,13 +63,13 @@ def main():
     RESULTS.mkdir(parents=True, exist_ok=True)
     for n in args.resolutions:
         eps, re_bed, lam, drift, seconds, steps = run(args.re, n, args.end_time, env)
-        rows = [r for r in stored_rows() if (r[0], r[1]) != (args.re, n)]
-        rows.append([args.re, n, eps, lam, ergun(re_bed), lam/ergun(re_bed) - 1,
+        rows = [r for r in stored_rows(TABLE) if (r[0], r[1]) != (args.re, n)]
+        rows.append([args.re, n, eps, lam, ergun_lambda(re_bed), lam/ergun_lambda(re_bed) - 1,
                      drift, seconds, steps])
         rows.sort()
         write_table(TABLE, HEADER, rows)
         print(f"Re={args.re:g} N={n:3d} porosity={eps:.4f} Lambda={lam:.1f} "
-              f"Ergun={ergun(re_bed):.1f} ({100*(lam/ergun(re_bed) - 1):+.1f}%) "
+              f"Ergun={ergun_lambda(re_bed):.1f} ({100*(lam/ergun_lambda(re_bed) - 1):+.1f}%) "
               f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
     summarise()
 
@@ -92,7 +78,7 @@ def summarise():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = stored_rows()
+    rows = stored_rows(TABLE)
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
     series = {}
     for re_number in sorted({r[0] for r in rows}):
@@ -100,22 +86,18 @@ def summarise():
         n = np.array([r[1] for r in sel])
         lam = np.array([r[3] for r in sel])
         reference = sel[-1][4]
-        if len(n) >= 3:
-            order = three_point_order(n[-3:], lam[-3:])
-            extrapolate = lam[-1] + (lam[-1] - lam[-2])/((n[-1]/n[-2])**order - 1)
-        else:
-            order, extrapolate = float("nan"), lam[-1]
+        order, extrapolate = richardson(n, lam)
         print(f"Re={re_number:g}: Lambda {', '.join(f'{v:.1f}' for v in lam)} at N = "
               f"{', '.join(str(int(v)) for v in n)}; observed order {order:.2f}, "
               f"extrapolate {extrapolate:.1f} (Ergun {reference:.1f}, "
               f"{100*(extrapolate/reference - 1):+.1f}%)")
         axes[0].plot(n, lam, "o-", label=f"Re {re_number:g} (order {order:.2f})")
         axes[0].axhline(reference, ls="--", lw=0.8, color="k", label=f"Ergun, Re {re_number:g}")
-        if np.isfinite(extrapolate):
+        if np.isfinite(order):
             axes[0].axhline(extrapolate, ls=":", lw=0.8, color="C1",
                             label="Richardson extrapolate")
-        series[f"Re {re_number:g}, against the extrapolate"] = \
-            [(r[7], abs(r[3]/extrapolate - 1), int(r[1])) for r in sel]
+            series[f"Re {re_number:g}, against the extrapolate"] = \
+                [(r[7], abs(r[3]/extrapolate - 1), int(r[1])) for r in sel]
         series[f"Re {re_number:g}, against Ergun"] = \
             [(r[7], abs(r[5]), int(r[1])) for r in sel]
     axes[0].set_xlabel("cells per diameter")
