@@ -147,19 +147,21 @@ def test_touching_spheres_in_a_cubic_bed_run_stably_and_balance_momentum(
     assert interior[3] == pytest.approx(g_drag, rel=0.05)
 
 
-def random_bed(tmp_path, foam_env, name, density):
+def random_bed(tmp_path, foam_env, name, density=2500, re_number=900, end_time=12,
+               max_courant=0.5):
     """tutorials/randomBed in a periodic cube of side 0.6 m (22 spheres at
-    solid fraction 0.61, 21^3 cells), for 12 s (about 80 steps), with the
-    given density of its fixed spheres."""
+    solid fraction 0.61, 21^3 cells), for end_time seconds (12 s: about 80
+    steps), with the given density of its fixed spheres."""
     case = Case.copy(HERE.parent / "tutorials" / "randomBed", tmp_path / name,
                      foam_env)
     mesh = case.path / "system" / "blockMeshDict"
     mesh.write_text(mesh.read_text().replace("L   1;", "L   0.6;"))
-    case.set("system/controlDict", "endTime", 12)
+    case.set("system/controlDict", "endTime", end_time)
+    case.set("system/controlDict", "maxCo", max_courant)
     properties = case.path / "constant" / "particleProperties"
     properties.write_text(properties.read_text().replace(
         "density     2500;", f"density     {density};"))
-    case.run("./Allrun", 900, 8)
+    case.run("./Allrun", re_number, 8)
     log = (case.path / "log.pimpleDLMFoam").read_text()
     gradient = float(log.split("pressure gradient = ")[-1].split()[0])
     return bed_rows(case), gradient
@@ -192,3 +194,19 @@ def test_dense_random_bed_at_high_reynolds_number_is_steady_and_balances_momentu
     rows_light, gradient_light = random_bed(tmp_path, foam_env, "light", 1000)
     assert gradient_light == pytest.approx(gradient, rel=1e-9)
     assert rows_light[-1][3] == pytest.approx(g_drag, rel=1e-9)
+
+
+@pytest.mark.xfail(strict=True, reason="known defect: the held force is a cell-centred "
+                   "source that the Rhie-Chow flux interpolation does not balance at the "
+                   "faces, so fluid leaks through fixed particles by an amount that "
+                   "shrinks with the time step (Lambda 368 / 428 at maxCo 0.5 / 0.125; "
+                   "see validation/README.md, random bed)")
+def test_steady_bed_drag_does_not_depend_on_the_time_step(tmp_path, foam_env):
+    """The steady state of a fixed bed is a property of the discrete
+    steady equations, not of the step that reached it: the 22-sphere
+    random bed at Re 100 (steady from about 15 s) gives the same drag at
+    Courant numbers 0.5 and 0.125, to 2 %."""
+    coarse, _ = random_bed(tmp_path, foam_env, "coarse", re_number=100, end_time=30)
+    fine, _ = random_bed(tmp_path, foam_env, "fine", re_number=100, end_time=30,
+                         max_courant=0.125)
+    assert fine[-1][3] == pytest.approx(coarse[-1][3], rel=0.02)
