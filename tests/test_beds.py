@@ -122,6 +122,26 @@ rigidProjection
     assert gradient == pytest.approx(1.0, rel=1e-3)
 
 
+@pytest.mark.parametrize("mixed_cells", ["interpolated", "massWeighted"])
+def test_fixed_sphere_density_does_not_enter_the_flow(tmp_path, foam_env, mixed_cells):
+    """A fixed sphere gives the mixture the fluid's density: the drag and
+    superficial velocity of the periodic array are the same for a sphere
+    density of 1000 and 2500 kg/m^3 (to 1e-9), with either mixed-cell
+    treatment (massWeighted once blended with rho_s phi/rho_f, up to 2.5)."""
+    results = []
+    for density in (1000, 2500):
+        case = array_case(tmp_path, foam_env, f"{mixed_cells}_{density}")
+        case.set("system/fvOptions", "rigidProjection/mixedCells", mixed_cells)
+        properties = case.path / "constant" / "particleProperties"
+        properties.write_text(properties.read_text().replace(
+            "density     1000;", f"density     {density};"))
+        case.run("./Allrun", 0.125, 8)
+        results.append(bed_rows(case)[-1])
+    light, heavy = results
+    assert heavy[1] == pytest.approx(light[1], rel=1e-9)   # superficial velocity
+    assert heavy[3] == pytest.approx(light[3], rel=1e-9)   # drag per unit volume
+
+
 def test_touching_spheres_in_a_cubic_bed_run_stably_and_balance_momentum(
         tmp_path, foam_env):
     """tutorials/cubicBed at Re 18, 8 cells per diameter: eight fixed

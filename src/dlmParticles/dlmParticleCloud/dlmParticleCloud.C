@@ -368,9 +368,7 @@ void Foam::dlmParticleCloud::updateFields()
     forAll(particles_, i)
     {
         const scalar deltaRho =
-            particles_[i].isFree()
-          ? particles_[i].density() - rhoFluid_.value()
-          : 0;
+            particles_[i].mixtureDensity(rhoFluid_.value()) - rhoFluid_.value();
         const DynamicList<label>& cells = cells_[i];
         const DynamicList<scalar>& fractions = fractions_[i];
 

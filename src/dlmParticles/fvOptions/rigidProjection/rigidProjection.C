@@ -1338,7 +1338,7 @@ void Foam::fv::rigidProjection::correctBlended(volVectorField& U)
         forAll(cells, k)
         {
             const label celli = cells[k];
-            const scalar b = beta(fractions[k], p.density(), rho[celli]);
+            const scalar b = beta(fractions[k], p.mixtureDensity(rhoFluid), rho[celli]);
             const scalar w = rho[celli]*b*V[celli];
             const vector r(C[celli] - p.position());
             const vector& uc = u[celli];
@@ -1416,8 +1416,7 @@ void Foam::fv::rigidProjection::correctBlended(volVectorField& U)
         (
             M*(p.velocity0() + (p.angularVelocity0() ^ delta))
         );
-        const scalar heldDensity = p.isFree() ? p.density() : rhoFluid;
-        vector F((P - P0)/deltaT - heldDensity*s[iVolume]*g);
+        vector F((P - P0)/deltaT - p.mixtureDensity(rhoFluid)*s[iVolume]*g);
         vector T((L - (I & p.angularVelocity0()))/deltaT);
         if (twoD)
         {
@@ -1436,7 +1435,7 @@ void Foam::fv::rigidProjection::correctBlended(volVectorField& U)
             const label celli = cells[k];
             const vector us(Up + (omega ^ (C[celli] - X)));
             u[celli] +=
-                beta(fractions[k], p.density(), rho[celli])*(us - u[celli]);
+                beta(fractions[k], p.mixtureDensity(rhoFluid), rho[celli])*(us - u[celli]);
         }
     }
 }
