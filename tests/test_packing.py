@@ -26,6 +26,11 @@ def pack_case(path, env, settings):
     return case
 
 
+def box_entry(lower, upper):
+    """The box entry of packSpheresDict for the corners lower and upper."""
+    return f"box ({' '.join(map(str, lower))}) ({' '.join(map(str, upper))});"
+
+
 def read_packing(path):
     """Centres (n, 3) and the radius of a particle file."""
     rows = np.loadtxt(path, comments="#", ndmin=2)
@@ -60,7 +65,7 @@ def test_overlap_check_uses_minimum_image():
 def test_periodic_packing_at_060(tmp_path, foam_env):
     lower, upper, radius, fraction = (0, 0, 0), (0.01, 0.01, 0.01), 0.0007, 0.6
     case = pack_case(tmp_path / "case", foam_env, f"""
-box ({' '.join(map(str, lower))}) ({' '.join(map(str, upper))});
+{box_entry(lower, upper)}
 periodic (yes yes yes);
 radius {radius};
 solidFraction {fraction};
@@ -96,7 +101,7 @@ def test_periodic_packing_at_064_near_random_close_packing(tmp_path, foam_env):
     Carlo compression; no two spheres overlap."""
     lower, upper, radius = (0, 0, 0), (1, 1, 1), 0.11283
     case = pack_case(tmp_path / "case", foam_env, f"""
-box ({' '.join(map(str, lower))}) ({' '.join(map(str, upper))});
+{box_entry(lower, upper)}
 periodic (yes yes yes);
 radius {radius};
 solidFraction 0.64;
@@ -114,7 +119,7 @@ def test_walls_in_z_at_050(tmp_path, foam_env):
     # A box off the origin: wrapping and wall distances are relative to it
     lower, upper, radius = (-0.004, 0.002, 0.001), (0.004, 0.010, 0.009), 0.0006
     case = pack_case(tmp_path / "case", foam_env, f"""
-box ({' '.join(map(str, lower))}) ({' '.join(map(str, upper))});
+{box_entry(lower, upper)}
 periodic (yes yes no);
 radius {radius};
 solidFraction 0.5;
