@@ -83,11 +83,27 @@ def ergun_lambda(re_number):
 
 
 def stored_rows(path):
-    """Numeric rows of a results CSV (none if it does not exist)."""
+    """Rows of a results CSV, numbers as floats and other values as text
+    (none if it does not exist)."""
+    def value(text):
+        try:
+            return float(text)
+        except ValueError:
+            return text
+
     if not path.exists():
         return []
-    return [[float(v) for v in line.split(",")]
+    return [[value(v) for v in line.split(",")]
             for line in path.read_text().splitlines()[1:]]
+
+
+def merge_row(path, header, row, key_columns=2, sort_key=None):
+    """Put row into a results CSV, replacing the row with the same first
+    key_columns values (the case and resolution), rows sorted."""
+    rows = [r for r in stored_rows(path) if r[:key_columns] != row[:key_columns]]
+    rows.append(row)
+    rows.sort(key=sort_key)
+    write_table(path, header, rows)
 
 
 def three_point_order(n, f):

@@ -36,8 +36,8 @@ import re
 
 import numpy as np
 
-from common import (Case, RESULTS, ROOT, RUNS, foam_environment, packed_bed_rows,
-                    timed_run, write_table)
+from common import (Case, RESULTS, ROOT, RUNS, foam_environment, merge_row,
+                    packed_bed_rows, stored_rows, timed_run)
 
 TABLE = RESULTS / "anisotropicBed.csv"
 HEADER = ["bed", "cellsPerDiameter", "porosity", "pressureDrop_m2s2",
@@ -91,6 +91,14 @@ def deplete(centres, axis, count):
     return centres[keep]
 
 
+def ergun_velocity(eps, gradient):
+    """The superficial velocity at which Ergun's gradient over the density
+    is the given one: the positive root of a u + b u^2 = gradient."""
+    a = 150*NU*(1 - eps)**2/(eps**3*D**2)
+    b = 1.75*(1 - eps)/(eps**3*D)
+    return 2*gradient/(a + math.sqrt(a*a + 4*b*gradient))
+
+
 def layered_ergun(centres, axis, series):
     """Ergun's estimate for the two layers of the bed: the band and the
     rest, with their porosities from the packing."""
@@ -99,18 +107,15 @@ def layered_ergun(centres, axis, series):
     eps1 = 1 - (slab_volume(centres, axis, 0, BAND[0]))/(BAND[0]*L*L)
     if series:
         return BAND[0]*ergun_gradient(eps1, U) + band_width*ergun_gradient(eps2, U)
-    # Parallel: the same gradient in both layers; bisect on u1
-    lo, hi = 0.0, U/BAND[0]
+    # Parallel: the same gradient in both layers, whose flows add up to U;
+    # bisect on the gradient (the flow grows with it)
+    lo, hi = 0.0, ergun_gradient(min(eps1, eps2), U)
     for _ in range(200):
-        u1 = 0.5*(lo + hi)
-        g = ergun_gradient(eps1, u1)
-        # u2 from g in layer 2: Ergun is increasing in u, bisect again
-        a, b = 0.0, 100*U
-        for _ in range(200):
-            u2 = 0.5*(a + b)
-            a, b = (u2, b) if ergun_gradient(eps2, u2) < g else (a, u2)
-        lo, hi = (u1, hi) if BAND[0]*u1 + band_width*u2 < U else (lo, u1)
-    return ergun_gradient(eps1, 0.5*(lo + hi))
+        gradient = 0.5*(lo + hi)
+        flow = BAND[0]*ergun_velocity(eps1, gradient) \
+            + band_width*ergun_velocity(eps2, gradient)
+        lo, hi = (gradient, hi) if flow < U else (lo, gradient)
+    return 0.5*(lo + hi)
 
 
 def beds(env):
@@ -155,16 +160,6 @@ def run(name, centres, n, end_time, env):
         seconds, steps
 
 
-def stored_rows():
-    if not TABLE.exists():
-        return []
-    rows = []
-    for line in TABLE.read_text().splitlines()[1:]:
-        values = line.split(",")
-        rows.append([values[0]] + [float(v) for v in values[1:]])
-    return rows
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--end-time", type=float, default=80)
@@ -182,11 +177,10 @@ def main():
         for name in BEDS:
             centres, estimate = packings[name]
             eps, drop, drift, seconds, steps = run(name, centres, n, args.end_time, env)
-            rows = [r for r in stored_rows() if (r[0], r[1]) != (name, n)]
-            rows.append([name, n, eps, drop, estimate, drop/estimate - 1, drift,
-                         seconds, steps])
-            rows.sort(key=lambda r: (BEDS.index(r[0]), r[1]))
-            write_table(TABLE, HEADER, rows)
+            merge_row(TABLE, HEADER,
+                      [name, n, eps, drop, estimate, drop/estimate - 1, drift,
+                       seconds, steps],
+                      sort_key=lambda r: (BEDS.index(r[0]), r[1]))
             print(f"{name:10s} N={n:3d} porosity={eps:.4f} dp/rho={drop:.5f} m^2/s^2 "
                   f"Ergun {estimate:.5f} ({100*(drop/estimate - 1):+.1f}%) "
                   f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
@@ -197,7 +191,7 @@ def summarise():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = stored_rows()
+    rows = stored_rows(TABLE)
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
     for k, name in enumerate(BEDS):
         sel = sorted((r for r in rows if r[0] == name), key=lambda r: r[1])

@@ -34,8 +34,8 @@ import re
 import numpy as np
 
 from common import (Case, RESULTS, ROOT, RUNS, ergun_lambda, foam_environment,
-                    packed_bed_rows, plot_speed_error, richardson, stored_rows,
-                    timed_run, write_table)
+                    merge_row, packed_bed_rows, plot_speed_error, richardson,
+                    stored_rows, timed_run)
 
 TABLE = RESULTS / "ergun.csv"
 HEADER = ["Re", "cellsPerDiameter", "Lambda", "Lambda_Ergun", "relErrorErgun",
@@ -126,12 +126,10 @@ def main():
     for re_number in [float(r) for r in args.re.split(",")]:
         for n in args.resolutions:
             lam, drift, seconds, steps = run(re_number, n, env)
-            rows = [r for r in stored_rows(TABLE) if (r[0], r[1]) != (re_number, n)]
-            rows.append([re_number, n, lam, ergun_lambda(re_number), lam/ergun_lambda(re_number) - 1,
-                         franzen(re_number), lam/franzen(re_number) - 1, drift,
-                         seconds, steps])
-            rows.sort()
-            write_table(TABLE, HEADER, rows)
+            merge_row(TABLE, HEADER,
+                      [re_number, n, lam, ergun_lambda(re_number),
+                       lam/ergun_lambda(re_number) - 1, franzen(re_number),
+                       lam/franzen(re_number) - 1, drift, seconds, steps])
             extra = (f" Zick&Homsy {LAMBDA_STOKES:.1f} ({100*(lam/LAMBDA_STOKES - 1):+.2f}%)"
                      if re_number < 1 else "")
             print(f"Re={re_number:g} N={n:3d} Lambda={lam:.2f} Ergun={ergun_lambda(re_number):.1f} "

@@ -25,8 +25,8 @@ import re
 import numpy as np
 
 from common import (Case, RESULTS, ROOT, RUNS, ergun_lambda, foam_environment,
-                    packed_bed_rows, plot_speed_error, richardson, stored_rows,
-                    timed_run, write_table)
+                    merge_row, packed_bed_rows, plot_speed_error, richardson,
+                    stored_rows, timed_run)
 
 TABLE = RESULTS / "randomBed.csv"
 HEADER = ["Re", "cellsPerDiameter", "porosity", "Lambda", "Lambda_Ergun",
@@ -63,11 +63,9 @@ def main():
     RESULTS.mkdir(parents=True, exist_ok=True)
     for n in args.resolutions:
         eps, re_bed, lam, drift, seconds, steps = run(args.re, n, args.end_time, env)
-        rows = [r for r in stored_rows(TABLE) if (r[0], r[1]) != (args.re, n)]
-        rows.append([args.re, n, eps, lam, ergun_lambda(re_bed), lam/ergun_lambda(re_bed) - 1,
-                     drift, seconds, steps])
-        rows.sort()
-        write_table(TABLE, HEADER, rows)
+        merge_row(TABLE, HEADER,
+                  [args.re, n, eps, lam, ergun_lambda(re_bed),
+                   lam/ergun_lambda(re_bed) - 1, drift, seconds, steps])
         print(f"Re={args.re:g} N={n:3d} porosity={eps:.4f} Lambda={lam:.1f} "
               f"Ergun={ergun_lambda(re_bed):.1f} ({100*(lam/ergun_lambda(re_bed) - 1):+.1f}%) "
               f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
