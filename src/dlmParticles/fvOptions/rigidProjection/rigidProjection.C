@@ -906,6 +906,7 @@ Foam::fv::rigidProjection::rigidProjection
     option(name, modelType, dict, mesh),
     mixedCells_(mixedCellsType::interpolated),
     forceRelaxation_(1),
+    implicitHold_(0),
     force_
     (
         IOobject
@@ -920,6 +921,7 @@ Foam::fv::rigidProjection::rigidProjection
         dimensionedVector(dimDensity*dimAcceleration, Zero)
     ),
     heldForce_(force_.primitiveField()),
+    holdRate_(mesh.nCells(), Zero),
     inside_(mesh.nCells(), false),
     regionOwner_(mesh.nCells(), -1),
     insideOf_(mesh.nCells(), -1),
@@ -1007,11 +1009,18 @@ bool Foam::fv::rigidProjection::read(const dictionary& dict)
             mixedCellsType::interpolated
         );
         forceRelaxation_ = coeffs_.getOrDefault<scalar>("forceRelaxation", 1);
+        implicitHold_ = coeffs_.getOrDefault<scalar>("implicitHold", 0);
         if (forceRelaxation_ < 0 || forceRelaxation_ > 1)
         {
             FatalIOErrorInFunction(coeffs_)
                 << "forceRelaxation " << forceRelaxation_ << " of fvOption "
                 << name_ << " is outside [0, 1]" << exit(FatalIOError);
+        }
+        if (implicitHold_ < 0)
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "implicitHold " << implicitHold_ << " of fvOption "
+                << name_ << " is negative" << exit(FatalIOError);
         }
         force_.writeOpt() =
             mixedCells_ == mixedCellsType::interpolated
@@ -1078,6 +1087,60 @@ void Foam::fv::rigidProjection::addSup
 
     eqn += source;
     cloud.addWorkTime(timer.elapsedCpuTime());
+}
+
+
+void Foam::fv::rigidProjection::constrain
+(
+    fvMatrix<vector>& eqn,
+    const label fieldi
+)
+{
+    if (implicitHold_ <= 0 || mixedCells_ != mixedCellsType::interpolated)
+    {
+        return;
+    }
+
+    // The held term c (u* - u), with u* the projected velocity, vanishes
+    // at convergence; c scales with the cell's coupling to its neighbours,
+    // not with 1/deltaT, so that the steady state does not depend on the
+    // time step
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    holdRate_ = 0;
+    scalarField offDiagonal(mesh_.nCells(), Zero);
+    eqn.sumMagOffDiag(offDiagonal);
+    forAll(eqn.psi().boundaryField(), patchi)
+    {
+        // Neighbours across processor and periodic faces count as well
+        if (eqn.psi().boundaryField()[patchi].coupled())
+        {
+            const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+            const vectorField& coeffs = eqn.boundaryCoeffs()[patchi];
+            forAll(faceCells, facei)
+            {
+                offDiagonal[faceCells[facei]] += mag(cmptAv(coeffs[facei]));
+            }
+        }
+    }
+    const vectorField& u = eqn.psi().primitiveField();
+    forAll(cloud.particles(), i)
+    {
+        if (cloud.particles()[i].isFree())
+        {
+            continue;
+        }
+        for (const label celli : regionCells_[i])
+        {
+            if (insideOf_[celli] >= 0)
+            {
+                const scalar c = implicitHold_*offDiagonal[celli];
+                eqn.diag()[celli] += c;
+                eqn.source()[celli] += c*u[celli];
+                holdRate_[celli] = c/mesh_.V()[celli];
+            }
+        }
+    }
 }
 
 
@@ -1204,6 +1267,25 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
             addVector(s + vB2, m*(r ^ d));
             addVector(s + vForce, V[celli]*f);
             addVector(s + vTorque, V[celli]*(r ^ f));
+
+            // The implicitly held cells' part of this correction's change
+            // (a held particle's velocity, and so its target, is known)
+            if (holdRate_[celli] > 0)
+            {
+                const dlmParticle& p = particles[i];
+                const vector target
+                (
+                    regionWeights_[i][k]*p.velocity()
+                  + (p.angularVelocity() ^ regionArms_[i][k])
+                  + sampled[i][k]
+                );
+                const vector df
+                (
+                    forceRelaxation_*holdRate_[celli]*(target - u[celli])
+                );
+                addVector(s + vForce, V[celli]*df);
+                addVector(s + vTorque, V[celli]*(r ^ df));
+            }
         }
     }
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
@@ -1259,7 +1341,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         else
         {
             // Force holding the particle: the carried force and this
-            // correction's change, (A x - b)/dt
+            // correction's change, (A x - b)/dt and the held cells' part
             const vector holdForce
             (
                 sumVector(s + vForce)
@@ -1303,7 +1385,8 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
             const label celli = cells[k];
             f[celli] =
                 heldForce_[celli]
-              + forceRelaxation_*rho[celli]*(targets[i][k] - u[celli])/deltaT;
+              + forceRelaxation_*(rho[celli]/deltaT + holdRate_[celli])
+               *(targets[i][k] - u[celli]);
             u[celli] = targets[i][k];
         }
     }
