@@ -152,16 +152,19 @@ def test_touching_spheres_in_a_cubic_bed_run_stably_and_balance_momentum(
     from inlet to outlet carries the particles' drag (to 1 %: the rest is
     the outflow's momentum flux and the viscous normal stresses at the
     ends; in a periodic cell the two agree to 1e-7), the porosity is the
-    exact 1 - pi/6 and the superficial velocity is the inflow's (to 1 %)."""
+    exact 1 - pi/6 and the superficial velocity is the inflow's (to 2 %:
+    packedBed's u is the volume average of the cell velocities, which at 8
+    cells per diameter differs from the flow rate by 1.1 % with the
+    implicit hold of the spheres' inside cells, 0.1 % without)."""
     case = Case.copy(HERE.parent / "tutorials" / "cubicBed", tmp_path / "bed",
                      foam_env)
     case.run("./Allrun", 18, 8)
     t, u, eps, g_drag, g_patches, Re = bed_rows(case)[-1][:6]
     assert t == pytest.approx(0.05, abs=1e-3)
     assert eps == pytest.approx(1 - math.pi/6, abs=1e-8)
-    assert u == pytest.approx(0.5, rel=0.01)
+    assert u == pytest.approx(0.5, rel=0.02)
     assert g_patches == pytest.approx(g_drag, rel=0.01)
-    assert Re == pytest.approx(18, rel=0.01)
+    assert Re == pytest.approx(18, rel=0.02)
     # The middle spheres carry the same drag as fully developed flow
     interior = bed_rows(case, "interior")[-1]
     assert interior[3] == pytest.approx(g_drag, rel=0.05)
@@ -251,27 +254,30 @@ def leak_through_particles(case):
 def test_steady_bed_drag_does_not_depend_on_the_time_step(tmp_path, foam_env):
     """The steady state of a fixed bed is a property of the discrete
     steady equations, not of the step that reached it: the 22-sphere
-    random bed at Re 100 (steady from about 15 s) gives the same drag at
-    Courant numbers 0.5 and 0.125, to 0.5 %. With OpenFOAM's ddtCorr,
-    which weakens the flux's time correction next to the particles, the
-    two differed by 16 %."""
+    random bed at Re 100 (settled from about 15 s, then with a weak
+    oscillation of +-0.4 % and a period near 2 s, at either time step) gives
+    the same mean drag over 20-30 s at Courant numbers 0.5 and 0.125, to
+    0.5 %. With OpenFOAM's ddtCorr, which weakens the flux's time
+    correction next to the particles, the two differed by 16 %."""
+    def mean_drag(rows):
+        return rows[rows[:, 0] >= 20, 3].mean()
     coarse, _ = random_bed(tmp_path, foam_env, "coarse", re_number=100, end_time=30)
     fine, _ = random_bed(tmp_path, foam_env, "fine", re_number=100, end_time=30,
                          max_courant=0.125)
-    assert fine[-1][3] == pytest.approx(coarse[-1][3], rel=0.005)
+    assert mean_drag(fine) == pytest.approx(mean_drag(coarse), rel=0.005)
 
 
 def test_implicit_hold_reduces_the_leak_through_fixed_particles(tmp_path, foam_env):
-    """With rigidProjection's implicitHold the cells inside fixed particles
-    are held implicitly, so that the pressure equation's face fluxes hardly
-    pass through them: on the 22-sphere random bed at Re 100 the mean flux
-    on faces inside the spheres is under 3 % of the fluid's at implicitHold
-    10, against over 5 % without the hold, which lowers the drag by more
-    than 10 %."""
+    """With rigidProjection's implicitHold (default 10) the cells inside
+    fixed particles are held implicitly, so that the pressure equation's
+    face fluxes hardly pass through them: on the 22-sphere random bed at Re
+    100 the mean flux on faces inside the spheres is under 3 % of the
+    fluid's, against over 5 % without the hold, which lowers the drag by
+    more than 10 %."""
     held = random_bed(tmp_path, foam_env, "held", re_number=100, end_time=20,
-                      ascii=True, implicit_hold=10)
-    free = random_bed(tmp_path, foam_env, "unheld", re_number=100, end_time=20,
                       ascii=True)
+    free = random_bed(tmp_path, foam_env, "unheld", re_number=100, end_time=20,
+                      ascii=True, implicit_hold=0)
     assert leak_through_particles(held[2]) < 0.03
     assert leak_through_particles(free[2]) > 0.05
     assert held[0][-1][3] > 1.1*free[0][-1][3]

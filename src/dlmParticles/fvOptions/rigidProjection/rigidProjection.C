@@ -906,7 +906,7 @@ Foam::fv::rigidProjection::rigidProjection
     option(name, modelType, dict, mesh),
     mixedCells_(mixedCellsType::interpolated),
     forceRelaxation_(1),
-    implicitHold_(0),
+    implicitHold_(10),
     force_
     (
         IOobject
@@ -1009,7 +1009,7 @@ bool Foam::fv::rigidProjection::read(const dictionary& dict)
             mixedCellsType::interpolated
         );
         forceRelaxation_ = coeffs_.getOrDefault<scalar>("forceRelaxation", 1);
-        implicitHold_ = coeffs_.getOrDefault<scalar>("implicitHold", 0);
+        implicitHold_ = coeffs_.getOrDefault<scalar>("implicitHold", 10);
         if (forceRelaxation_ < 0 || forceRelaxation_ > 1)
         {
             FatalIOErrorInFunction(coeffs_)
