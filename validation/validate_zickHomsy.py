@@ -19,19 +19,13 @@ import re
 
 import numpy as np
 
-from common import (Case, RESULTS, ROOT, RUNS, foam_environment, observed_order,
-                    plot_speed_error, read_csv, timed_run, write_table)
+from common import (Case, RESULTS, ROOT, RUNS, foam_environment, merge_row,
+                    observed_order, plot_speed_error, read_csv, stored_rows,
+                    timed_run)
 
 TABLE = RESULTS / "zickHomsy.csv"
 HEADER = ["solidFraction", "cellsPerDiameter", "K", "K_ZickHomsy", "relError",
           "wallTime_s", "steps"]
-
-
-def stored_rows():
-    if not TABLE.exists():
-        return []
-    return [[float(v) for v in line.split(",")]
-            for line in TABLE.read_text().splitlines()[1:]]
 
 
 def run(phi, n, env):
@@ -59,15 +53,13 @@ def main():
         for n in args.resolutions:
             K, seconds, steps = run(phi, n, env)
             error = K/exact[round(phi, 4)] - 1
-            rows = [r for r in stored_rows() if (r[0], r[1]) != (phi, n)]
-            rows.append([phi, n, K, exact[round(phi, 4)], error, seconds, steps])
-            rows.sort()
-            write_table(TABLE, HEADER, rows)
+            merge_row(TABLE, HEADER,
+                      [phi, n, K, exact[round(phi, 4)], error, seconds, steps])
             print(f"phi={phi:.3f} N={n:3d} K={K:.4f} Z&H={exact[round(phi, 4)]:.3f} "
                   f"error={100*error:+.2f}% wall={seconds:.0f}s steps={steps}",
                   flush=True)
 
-    rows = stored_rows()
+    rows = stored_rows(TABLE)
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
