@@ -348,3 +348,46 @@ def test_history_interval_thins_the_history(tmp_path, foam_env, interval):
         h = case.history()["left"]
         assert len(h) == 30//interval
         assert np.allclose(np.diff(h[:, 0]), interval*1e-4)
+
+
+@pytest.mark.parametrize("tangential", ["spring", "coulomb"])
+def test_sphere_pyramid_stands_only_with_static_friction(
+        tmp_path, foam_env, tangential):
+    """Three spheres on the floor, 0.1 R apart at the corners of a
+    triangle, and a fourth resting on them, friction 0.5 everywhere:
+    standing needs friction 0.34 at the upper contacts (tan of half the 37
+    degree angle of the lines of centres to the vertical), so the
+    static-friction spring holds the pyramid, the top sphere settling by
+    less than 1 % of R in 1 s; the paper's sliding damping has no force at
+    rest, and the bottom spheres creep apart until the top one has dropped
+    by more than a fifth of R (the reason a heap needs the spring). (Two
+    spheres under a third are no test: the top one rolls off sideways, a
+    physical instability growing twentyfold every 50 ms.)"""
+    R, gap = 0.002, 0.0002
+    d = (2*R + gap)/math.sqrt(3)
+    corners = [(d*math.cos(a), d*math.sin(a))
+               for a in (0, 2*math.pi/3, 4*math.pi/3)]
+    top = R + math.sqrt((2*R)**2 - d**2)*(1 + 1e-4)
+    case = dry_case(tmp_path, foam_env, "pyramid", {
+        **both_pairs("tangential", tangential),
+        **both_pairs("friction", 0.5),
+        ("constant/g", "value"): "(0 0 -9.81)",
+        ("system/controlDict", "endTime"): 1,
+        ("system/controlDict", "deltaT"): 5e-4,
+        ("system/controlDict", "writeInterval"): 1000,
+    }, remove=["particles/left", "particles/right"])
+    spheres = [(f"bottom{k}", x, y, R*(1 - 1e-4)) for k, (x, y) in enumerate(corners)]
+    spheres.append(("top", 0.0, 0.0, top))
+    entries = "".join(
+        f"    {name} {{ shape sphere; radius {R}; density 2500;"
+        f" position ({x!r} {y!r} {z!r}); velocity (0 0 0); }}\n"
+        for name, x, y, z in spheres)
+    props = case.path / "constant" / "particleProperties"
+    props.write_text(props.read_text().replace("particles\n{\n",
+                                               "particles\n{\n" + entries, 1))
+    case.run("dlmDEMFoam")
+    drop = top - case.history()["top"][:, 3]
+    if tangential == "spring":
+        assert drop.max() < 0.01*R
+    else:
+        assert drop[-1] > 0.2*R
