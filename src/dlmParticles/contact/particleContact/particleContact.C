@@ -129,10 +129,30 @@ void Foam::particleContact::readLaws()
 }
 
 
-Foam::scalar Foam::particleContact::inverseMass(const label i) const
+void Foam::particleContact::gatherConstants()
 {
-    const dlmParticle& p = cloud_.particles()[i];
-    return p.isFree() ? 1/(p.density()*p.shape().volume()) : 0;
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    inverseMass_.setSize(particles.size());
+    inverseInertiaBody_.setSize(particles.size());
+    radius_.setSize(particles.size());
+    moving_.setSize(particles.size());
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        radius_[i] = p.shape().boundingRadius();
+        moving_[i] = p.motion() != dlmParticle::motionType::fixed;
+        if (p.isFree())
+        {
+            inverseMass_[i] = 1/(p.density()*p.shape().volume());
+            inverseInertiaBody_[i] =
+                inv(p.density()*p.shape().inertiaPerUnitDensity());
+        }
+        else
+        {
+            inverseMass_[i] = 0;
+            inverseInertiaBody_[i] = Zero;
+        }
+    }
 }
 
 
@@ -142,14 +162,15 @@ Foam::tensor Foam::particleContact::inverseInertia
     const quaternion& q
 ) const
 {
-    const dlmParticle& p = cloud_.particles()[i];
-    if (!p.isFree())
+    const symmTensor& bodyInverse = inverseInertiaBody_[i];
+    // Spheres and disks about their axis: the same in every frame
+    if (bodyInverse.xy() == 0 && bodyInverse.xz() == 0 && bodyInverse.yz() == 0
+     && bodyInverse.xx() == bodyInverse.yy() && bodyInverse.yy() == bodyInverse.zz())
     {
-        return Zero;
+        return tensor(bodyInverse);
     }
     const tensor R(q.R());
-    const tensor I(R & (p.density()*p.shape().inertiaPerUnitDensity()) & R.T());
-    return inv(I);
+    return R & bodyInverse & R.T();
 }
 
 
@@ -458,8 +479,7 @@ void Foam::particleContact::applyContact
     const scalar h
 )
 {
-    const PtrList<dlmParticle>& particles = cloud_.particles();
-    const scalar Ri = particles[i].shape().boundingRadius();
+    const scalar Ri = radius_[i];
 
     const vector ri(location - position_[i]);
     vector relative(-(velocity_[i] + (omega_[i] ^ ri)));
@@ -468,7 +488,7 @@ void Foam::particleContact::applyContact
     vector rj(Zero);
     if (j >= 0)
     {
-        const scalar Rj = particles[j].shape().boundingRadius();
+        const scalar Rj = radius_[j];
         rj = location - position_[j];
         relative += velocity_[j] + (omega_[j] ^ rj);
         invMass += inverseMass(j);
@@ -550,15 +570,14 @@ void Foam::particleContact::applyLubrication
     const vector& normal
 )
 {
-    const PtrList<dlmParticle>& particles = cloud_.particles();
-    const scalar Ri = particles[i].shape().boundingRadius();
+    const scalar Ri = radius_[i];
 
     vector relative(-velocity_[i]);
     scalar invMass = inverseMass(i);
     scalar radius = Ri;
     if (j >= 0)
     {
-        const scalar Rj = particles[j].shape().boundingRadius();
+        const scalar Rj = radius_[j];
         relative += velocity_[j];
         invMass += inverseMass(j);
         radius = Ri*Rj/(Ri + Rj);
@@ -842,6 +861,7 @@ void Foam::particleContact::evolve
     PtrList<dlmParticle>& particles = cloud_.particles();
     const label n = particles.size();
 
+    gatherConstants();
     findCandidates(deltaT, accel);
 
     // Step state of the particles that may touch something, from the
@@ -899,8 +919,7 @@ void Foam::particleContact::evolve
             {
                 continue;
             }
-            const dlmParticle& p = particles[i];
-            if (p.isFree())
+            if (inverseMass_[i] > 0)
             {
                 const vector dv
                 (
@@ -926,7 +945,7 @@ void Foam::particleContact::evolve
                 halfVelocity[i] = velocity_[i];
                 halfOmega[i] = omega_[i];
             }
-            if (p.motion() != dlmParticle::motionType::fixed)
+            if (moving_[i])
             {
                 position_[i] += h*halfVelocity[i];
                 const scalar angle = mag(halfOmega[i])*h;
@@ -945,7 +964,7 @@ void Foam::particleContact::evolve
 
         forAll(particles, i)
         {
-            if (!involved_[i] || !particles[i].isFree())
+            if (!involved_[i] || inverseMass_[i] == 0)
             {
                 continue;
             }
