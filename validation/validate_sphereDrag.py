@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""Drag of one fixed sphere in a uniform stream at finite Reynolds number
+against the Schiller-Naumann correlation (reference README section 6): a
+check of the method's inertial flow on its own, apart from packings.
+
+The sphere (D = 4 mm) sits 4 D behind the inlet of a 12 D x 6 D x 6 D box
+(tutorials/cubicBed's boundaries: fixed inflow U = 0.5 m/s, fixed pressure
+at the outlet, periodic sides, so a lateral array at 6 D spacing, 2.2 %
+blockage), Re = U D/nu. C_D = F/(rho U^2 pi D^2/8) from the particle
+history, averaged over the last fifth of 30 D/U; its drift over that
+window is reported. Writes results/sphereDrag.csv.
+
+    validation/validate_sphereDrag.py [--re 20,100] [N ...]   (default N = 8 12)
+"""
+
+import argparse
+import math
+
+import numpy as np
+
+from common import Case, RESULTS, ROOT, RUNS, foam_environment, merge_row, timed_run
+
+TABLE = RESULTS / "sphereDrag.csv"
+HEADER = ["Re", "cellsPerDiameter", "CD", "CD_SchillerNaumann", "relError", "drift",
+          "wallTime_s", "steps"]
+D, U = 0.004, 0.5
+LENGTH, WIDTH, CENTRE = 12, 6, 4       # in diameters
+
+
+def schiller_naumann(re_number):
+    return 24/re_number*(1 + 0.15*re_number**0.687)
+
+
+def make_case(re_number, n, env):
+    case = Case.copy(ROOT / "tutorials" / "cubicBed",
+                     RUNS / f"sphereDrag_Re{re_number:g}_N{n}", env)
+    L, W = LENGTH*D, WIDTH*D
+    (case.path / "system" / "blockMeshDict").write_text(f"""\
+FoamFile {{ version 2.0; format ascii; class dictionary; object blockMeshDict; }}
+vertices ((0 0 0) ({L!r} 0 0) ({L!r} {W!r} 0) (0 {W!r} 0)
+          (0 0 {W!r}) ({L!r} 0 {W!r}) ({L!r} {W!r} {W!r}) (0 {W!r} {W!r}));
+blocks (hex (0 1 2 3 4 5 6 7) ({LENGTH*n} {WIDTH*n} {WIDTH*n}) simpleGrading (1 1 1));
+boundary
+(
+    inlet  {{ type patch; faces ((0 4 7 3)); }}
+    outlet {{ type patch; faces ((1 2 6 5)); }}
+    bottom {{ type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }}
+    top    {{ type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }}
+    back   {{ type cyclic; neighbourPatch front; faces ((0 3 2 1)); }}
+    front  {{ type cyclic; neighbourPatch back;  faces ((4 5 6 7)); }}
+);
+""")
+    (case.path / "constant" / "particleProperties").write_text(f"""\
+FoamFile {{ version 2.0; format ascii; class dictionary; object particleProperties; }}
+particles
+{{
+    sphere
+    {{
+        shape       sphere;
+        radius      {D/2!r};
+        density     2500;
+        motion      fixed;
+        position    ({CENTRE*D!r} {W/2!r} {W/2!r});
+    }}
+}}
+""")
+    (case.path / "constant" / "bed.dat").unlink()
+    nu = U*D/re_number
+    properties = case.path / "constant" / "transportProperties"
+    properties.write_text("\n".join(
+        f"nu              {nu!r};" if line.startswith("nu ") else line
+        for line in properties.read_text().splitlines()) + "\n")
+    control = case.path / "system" / "controlDict"
+    text = control.read_text()
+    text = text[:text.index("functions")] + "functions {}\n"
+    end = 30*D/U
+    text = "\n".join(
+        f"endTime         {end!r};" if line.startswith("endTime ") else
+        f"writeInterval   {end!r};" if line.startswith("writeInterval ") else line
+        for line in text.splitlines()) + "\n"
+    control.write_text(text)
+    case.run("blockMesh")
+    return case
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--re", default="20,100")
+    parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12])
+    args = parser.parse_args()
+
+    env = foam_environment()
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    for re_number in [float(r) for r in args.re.split(",")]:
+        reference = schiller_naumann(re_number)
+        for n in args.resolutions:
+            case = make_case(re_number, n, env)
+            seconds = timed_run(case, "pimpleDLMFoam")
+            h = case.history()["sphere"]
+            t, drag = h[:, 0], h[:, 10]
+            window = t >= 0.8*t[-1]
+            cd = drag[window]/(1000*U**2*math.pi*D**2/8)
+            drift = (cd[-1] - cd[0])/cd.mean()
+            error = cd.mean()/reference - 1
+            merge_row(TABLE, HEADER, [re_number, n, cd.mean(), reference, error, drift,
+                                      seconds, len(t)])
+            print(f"Re={re_number:g} N={n:3d} C_D={cd.mean():.4f} Schiller-Naumann "
+                  f"{reference:.4f} ({100*error:+.1f}%) drift={100*drift:+.2f}% "
+                  f"wall={seconds:.0f}s steps={len(t)}", flush=True)
+
+
+if __name__ == "__main__":
+    main()
