@@ -1246,6 +1246,23 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
 
     // Velocity of the samples of each forced cell
     List<vectorField> sampled(particles.size());
+
+    // Target velocity of forced cell k of particle i for rigid motion
+    // (Up, omega)
+    auto target = [&]
+    (
+        const label i,
+        const label k,
+        const vector& Up,
+        const vector& omega
+    ) -> vector
+    {
+        return
+            regionWeights_[i][k]*Up
+          + (omega ^ regionArms_[i][k])
+          + sampled[i][k];
+    };
+
     scalarList sums(nVelocitySums*particles.size(), Zero);
     forAll(particles, i)
     {
@@ -1273,15 +1290,10 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
             if (holdRate_[celli] > 0)
             {
                 const dlmParticle& p = particles[i];
-                const vector target
-                (
-                    regionWeights_[i][k]*p.velocity()
-                  + (p.angularVelocity() ^ regionArms_[i][k])
-                  + sampled[i][k]
-                );
                 const vector df
                 (
-                    forceRelaxation_*holdRate_[celli]*(target - u[celli])
+                    forceRelaxation_*holdRate_[celli]
+                   *(target(i, k, p.velocity(), p.angularVelocity()) - u[celli])
                 );
                 addVector(s + vForce, V[celli]*df);
                 addVector(s + vTorque, V[celli]*(r ^ df));
@@ -1366,14 +1378,10 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         p.setLoads(F, T);
 
         const DynamicList<label>& cells = regionCells_[i];
-        vectorField& target = targets[i];
-        target.setSize(cells.size());
+        targets[i].setSize(cells.size());
         forAll(cells, k)
         {
-            target[k] =
-                regionWeights_[i][k]*Up
-              + (omega ^ regionArms_[i][k])
-              + sampled[i][k];
+            targets[i][k] = target(i, k, Up, omega);
         }
     }
 
