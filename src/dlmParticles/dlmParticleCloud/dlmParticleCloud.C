@@ -7,11 +7,8 @@
 #include "dlmParticleCloud.H"
 #include "zeroGradientFvPatchFields.H"
 #include "surfaceFields.H"
-#include "treeDataCell.H"
-#include "indexedOctree.H"
 #include "IFstream.H"
 #include "cpuTime.H"
-#include "Random.H"
 #include "HashSet.H"
 #include "OSspecific.H"
 #include "emptyPolyPatch.H"
@@ -151,7 +148,7 @@ void Foam::dlmParticleCloud::checkParticles()
                 << " shape such as sphere." << exit(FatalError);
         }
 
-        label celli = cellTree_.findInside(p.position());
+        label celli = findCell(p.position());
         reduce(celli, maxOp<label>());
         if (celli < 0)
         {
@@ -287,14 +284,18 @@ void Foam::dlmParticleCloud::checkOverlaps() const
 }
 
 
-Foam::treeBoundBox Foam::dlmParticleCloud::searchDomain(const fvMesh& mesh)
+Foam::label Foam::dlmParticleCloud::findCell(const point& x) const
 {
-    treeBoundBox bb(mesh.points());
-    Random rndGen(261782);
-    bb = bb.extend(rndGen, 1e-4);
-    bb.min() -= point::uniform(ROOTVSMALL);
-    bb.max() += point::uniform(ROOTVSMALL);
-    return bb;
+    DynamicList<label> candidates;
+    cellBins_->findBox(boundBox(x, x), candidates);
+    for (const label celli : candidates)
+    {
+        if (mesh_.pointInCell(x, celli, polyMesh::CELL_TETS))
+        {
+            return celli;
+        }
+    }
+    return -1;
 }
 
 
@@ -315,7 +316,8 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
         hi.z() = bounds.max().z();
     }
 
-    nearCells_[i] = cellTree_.findBox(treeBoundBox(lo, hi));
+    nearCells_[i].clear();
+    cellBins_->findBox(boundBox(lo, hi), nearCells_[i]);
 
     const tensor R(p.R());
     const scalar leafSize = Rb/surfaceResolution_;
@@ -529,14 +531,6 @@ Foam::dlmParticleCloud::dlmParticleCloud
     cellSizeMax_(gMax(mag(mesh.delta()().primitiveField()))),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
-    cellTree_
-    (
-        treeDataCell(true, mesh, polyMesh::CELL_TETS),
-        searchDomain(mesh),
-        8,
-        10,
-        5.0
-    ),
     boundaryCell_(mesh.nCells(), false),
     touchingBoundary_(false),
     resolved_(!dry),
@@ -634,6 +628,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
         cellIsBox_[celli] =
             mag(cellBoxes_[celli].volume() - V[celli]) < 1e-6*V[celli];
     }
+    cellBins_.reset(new cellBins(cellBoxes_));
 
     for (direction d = 0; d < vector::nComponents; ++d)
     {

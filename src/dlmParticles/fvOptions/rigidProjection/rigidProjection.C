@@ -268,6 +268,7 @@ void Foam::fv::rigidProjection::markInsideCells()
     const vectorField& C = mesh_.C();
 
     insideOf_ = -1;
+    DynamicList<label> insideCells;
     forAll(particles, i)
     {
         const dlmParticle& p = particles[i];
@@ -282,6 +283,7 @@ void Foam::fv::rigidProjection::markInsideCells()
             )
             {
                 insideOf_[celli] = cloud.source(i);
+                insideCells.append(celli);
             }
         }
     }
@@ -312,13 +314,23 @@ void Foam::fv::rigidProjection::markInsideCells()
             next = next == -1 ? body : -2;
         }
     };
+    // Only the faces of inside cells can make a neighbour next to a body
+    // (a cell listed twice adds its body twice, which changes nothing)
     nextTo_ = -1;
-    forAll(mesh_.neighbour(), facei)
+    for (const label celli : insideCells)
     {
-        const label own = mesh_.owner()[facei];
-        const label nei = mesh_.neighbour()[facei];
-        addBody(nextTo_[own], insideOf_[nei]);
-        addBody(nextTo_[nei], insideOf_[own]);
+        for (const label facei : mesh_.cells()[celli])
+        {
+            if (mesh_.isInternalFace(facei))
+            {
+                const label own = mesh_.owner()[facei];
+                addBody
+                (
+                    nextTo_[own == celli ? mesh_.neighbour()[facei] : own],
+                    insideOf_[celli]
+                );
+            }
+        }
     }
     forAll(insideAcross_, bFacei)
     {
@@ -394,7 +406,7 @@ void Foam::fv::rigidProjection::findRegion(const label i)
 
     // An interface cell's centre lies within a neighbour distance of the
     // surface: it is among the particle's near cells
-    const labelList& candidates = cloud.nearCells(i);
+    const labelUList& candidates = cloud.nearCells(i);
     const scalar cellSizeMax = cloud.cellSizeMax();
 
     // Which candidates have their centre inside
