@@ -8,9 +8,8 @@
 #include "dlmParticleCloud.H"
 #include "uniformDimensionedFields.H"
 #include "fvMatrices.H"
+#include "fvmDdt.H"
 #include "emptyFvPatch.H"
-#include "indexedOctree.H"
-#include "treeDataCell.H"
 #include "scalarMatrices.H"
 #include "cpuTime.H"
 #include "syncTools.H"
@@ -946,7 +945,9 @@ Foam::fv::rigidProjection::rigidProjection
     secondLayerCell_(mesh.nBoundaryFaces(), -1),
     secondLayerDelta_(mesh.nBoundaryFaces(), Zero),
     secondLayerAcross_(mesh.nBoundaryFaces(), false),
-    regionTimeIndex_(-1)
+    regionTimeIndex_(-1),
+    ddtRate_(0),
+    ddtRateTimeIndex_(-1)
 {
     fieldNames_.setSize(1, "U");
     applied_.setSize(1, false);
@@ -1156,6 +1157,25 @@ void Foam::fv::rigidProjection::constrain
 }
 
 
+Foam::scalar Foam::fv::rigidProjection::ddtRate(const volVectorField& U)
+{
+    const label timeIndex = mesh_.time().timeIndex();
+    if (ddtRateTimeIndex_ != timeIndex)
+    {
+        // Every processor takes the same value, also one without cells
+        ddtRate_ = 0;
+        if (mesh_.nCells() > 0)
+        {
+            tmp<fvVectorMatrix> ddtU(fvm::ddt(U));
+            ddtRate_ = ddtU().diag()[0]/mesh_.V()[0];
+        }
+        reduce(ddtRate_, maxOp<scalar>());
+        ddtRateTimeIndex_ = timeIndex;
+    }
+    return ddtRate_;
+}
+
+
 void Foam::fv::rigidProjection::correct(volVectorField& U)
 {
     const cpuTime timer;
@@ -1192,6 +1212,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
     const vector gravity(this->gravity());
     const scalar rhoFluid = cloud.rhoFluid().value();
     const scalar deltaT = mesh_.time().deltaTValue();
+    const scalar ddtRate = this->ddtRate(U);
     const bool twoD = cloud.twoD();
 
     // Values across coupled faces, fetched once per patch
@@ -1365,16 +1386,17 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         else
         {
             // Force holding the particle: the carried force and this
-            // correction's change, (A x - b)/dt and the held cells' part
+            // correction's change, (A x - b) ddtRate and the held cells'
+            // part
             const vector holdForce
             (
                 sumVector(s + vForce)
-              + forceRelaxation_*((A11 & Up) + (A12 & omega) - b1)/deltaT
+              + forceRelaxation_*ddtRate*((A11 & Up) + (A12 & omega) - b1)
             );
             const vector holdTorque
             (
                 sumVector(s + vTorque)
-              + forceRelaxation_*((A21 & Up) + (A22 & omega) - b2)/deltaT
+              + forceRelaxation_*ddtRate*((A21 & Up) + (A22 & omega) - b2)
             );
             F =
                 g[gA11]*(Up - p.velocity0())/deltaT
@@ -1405,7 +1427,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
             const label celli = cells[k];
             f[celli] =
                 heldForce_[celli]
-              + forceRelaxation_*(rho[celli]/deltaT + holdRate_[celli])
+              + forceRelaxation_*(rho[celli]*ddtRate + holdRate_[celli])
                *(targets[i][k] - u[celli]);
             u[celli] = targets[i][k];
         }
@@ -1427,6 +1449,7 @@ void Foam::fv::rigidProjection::correctBlended(volVectorField& U)
     const vector g(gravity());
     const scalar rhoFluid = cloud.rhoFluid().value();
     const scalar deltaT = mesh_.time().deltaTValue();
+    const scalar ddtRate = this->ddtRate(U);
     const bool twoD = cloud.twoD();
 
     // Local sums, relative to each particle's own centre
