@@ -21,8 +21,14 @@ import tenCate
 
 
 def rms_velocity_deviation(case, history):
+    """RMS deviation from the experiment's velocity until the gap falls to
+    a tenth of a diameter: the landing itself takes a few hundredths of a
+    second, where a small shift in time gives large deviations."""
     t_ref, u_ref = tenCate.reference_velocity(case)
-    inside = t_ref <= history[-1, 0]
+    gap = (history[:, 3] - 0.0075)/0.015
+    landing = np.nonzero(gap < 0.1)[0]
+    end = history[landing[0], 0] if len(landing) else history[-1, 0]
+    inside = t_ref <= end
     u = np.interp(t_ref[inside], history[:, 0], history[:, 6])
     return np.sqrt(np.mean((u - u_ref[inside])**2))/tenCate.CASES[case][2]
 

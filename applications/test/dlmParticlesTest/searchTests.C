@@ -21,16 +21,16 @@ using namespace Foam;
 namespace
 {
 
-//- Boxes of a grid graded geometrically in x (ratio 1.1 per cell), uniform
+//- Boxes of a grid graded geometrically in x (ratio per cell), uniform
 //  in y, and in z unless flat (one layer)
-List<boundBox> gradedGrid(const label n, const bool flat)
+List<boundBox> gradedGrid(const label n, const bool flat, const scalar ratio)
 {
     scalarList x(n + 1, Zero);
     scalar h = 1;
     for (label i = 0; i < n; ++i)
     {
         x[i + 1] = x[i] + h;
-        h *= 1.1;
+        h *= ratio;
     }
     const label nz = flat ? 1 : n;
     List<boundBox> boxes;
@@ -93,11 +93,18 @@ void checkAgainstBruteForce(const List<boundBox>& boxes)
         CHECK(found.size() == expected);
     }
 
-    // A query whose side lies on cell faces finds the cells that touch it
-    const boundBox& first = boxes[0];
-    DynamicList<label> found;
-    bins.findBox(boundBox(first.max(), first.max() + first.span()), found);
-    CHECK(labelHashSet(found).found(0));
+    // Queries whose sides or corners lie on cell faces (on a uniform grid
+    // also on bin edges) find the cells that touch them
+    for (const label celli : {label(0), label(boxes.size()/2)})
+    {
+        const boundBox& bb = boxes[celli];
+        DynamicList<label> found;
+        bins.findBox(boundBox(bb.max(), bb.max() + bb.span()), found);
+        CHECK(labelHashSet(found).found(celli));
+        found.clear();
+        bins.findBox(boundBox(bb.max(), bb.max()), found);
+        CHECK(labelHashSet(found).found(celli));
+    }
 }
 
 } // End anonymous namespace
@@ -105,13 +112,17 @@ void checkAgainstBruteForce(const List<boundBox>& boxes)
 
 TEST_CASE("near-cell search finds what brute force finds", "[geometry]")
 {
+    SECTION("uniform 3D grid (cell faces on bin edges)")
+    {
+        checkAgainstBruteForce(gradedGrid(20, false, 1));
+    }
     SECTION("graded 3D grid")
     {
-        checkAgainstBruteForce(gradedGrid(20, false));
+        checkAgainstBruteForce(gradedGrid(20, false, 1.1));
     }
     SECTION("flat (2D) grid")
     {
-        checkAgainstBruteForce(gradedGrid(30, true));
+        checkAgainstBruteForce(gradedGrid(30, true, 1.1));
     }
 }
 

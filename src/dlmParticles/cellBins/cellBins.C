@@ -172,8 +172,12 @@ void Foam::cellBins::findBox
         query_ = 0;
     }
     ++query_;
+
+    // Cells are binned shrunk: a cell that touches the query at a bin edge
+    // lies in the bin on the other side, so the range is taken widened
+    const vector eps(vector::uniform(1e-6*binSize_));
     Vector<label> lo, hi;
-    binRange(bb, lo, hi);
+    binRange(boundBox(bb.min() - eps, bb.max() + eps), lo, hi);
     for (label k = lo.z(); k <= hi.z(); ++k)
     {
         for (label j = lo.y(); j <= hi.y(); ++j)

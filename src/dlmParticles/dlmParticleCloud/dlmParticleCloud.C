@@ -288,9 +288,17 @@ Foam::label Foam::dlmParticleCloud::findCell(const point& x) const
 {
     DynamicList<label> candidates;
     cellBins_->findBox(boundBox(x, x), candidates);
+    // A box cell holds the points of its closed box: a point on a face or
+    // corner shared by box cells is in one of them, where the tet test
+    // could reject it in all of them by round-off
     for (const label celli : candidates)
     {
-        if (mesh_.pointInCell(x, celli, polyMesh::CELL_TETS))
+        if
+        (
+            cellIsBox_[celli]
+          ? cellBoxes_[celli].contains(x)
+          : mesh_.pointInCell(x, celli, polyMesh::CELL_TETS)
+        )
         {
             return celli;
         }
