@@ -8,6 +8,7 @@
 #include "zeroGradientFvPatchFields.H"
 #include "surfaceFields.H"
 #include "IFstream.H"
+#include "PtrDynList.H"
 #include "cpuTime.H"
 #include "HashSet.H"
 #include "OSspecific.H"
@@ -63,6 +64,8 @@ void Foam::dlmParticleCloud::readParticleFile()
     }
 
     const word stem(file.nameLessExt());
+    // Appending to the PtrList would reallocate it per particle (quadratic)
+    PtrDynList<dlmParticle> read;
     std::string line;
     label lineNo = 0;
     label nRead = 0;
@@ -94,8 +97,14 @@ void Foam::dlmParticleCloud::readParticleFile()
           + Foam::name(nRead);
         particleDict.set("position", point(x, y, z));
         particleDict.set("radius", radius);
-        particles_.append(new dlmParticle(particleDict));
+        read.append(new dlmParticle(particleDict));
         ++nRead;
+    }
+    const label nBefore = particles_.size();
+    particles_.resize(nBefore + nRead);
+    forAll(read, k)
+    {
+        particles_.set(nBefore + k, read.release(k));
     }
 
     if (nRead == 0)
