@@ -136,6 +136,7 @@ void Foam::particleContact::gatherConstants()
     inverseInertiaBody_.setSize(particles.size());
     radius_.setSize(particles.size());
     moving_.setSize(particles.size());
+    isotropic_.setSize(particles.size());
     forAll(particles, i)
     {
         const dlmParticle& p = particles[i];
@@ -152,6 +153,11 @@ void Foam::particleContact::gatherConstants()
             inverseMass_[i] = 0;
             inverseInertiaBody_[i] = Zero;
         }
+        // Spheres and disks about their axis: the same in every frame
+        const symmTensor& I = inverseInertiaBody_[i];
+        isotropic_[i] =
+            I.xy() == 0 && I.xz() == 0 && I.yz() == 0
+         && I.xx() == I.yy() && I.yy() == I.zz();
     }
 }
 
@@ -163,9 +169,7 @@ Foam::tensor Foam::particleContact::inverseInertia
 ) const
 {
     const symmTensor& bodyInverse = inverseInertiaBody_[i];
-    // Spheres and disks about their axis: the same in every frame
-    if (bodyInverse.xy() == 0 && bodyInverse.xz() == 0 && bodyInverse.yz() == 0
-     && bodyInverse.xx() == bodyInverse.yy() && bodyInverse.yy() == bodyInverse.zz())
+    if (isotropic_[i])
     {
         return tensor(bodyInverse);
     }
@@ -608,7 +612,7 @@ void Foam::particleContact::applyLubrication
 
 void Foam::particleContact::evaluate(const scalar h)
 {
-    PtrList<dlmParticle>& particles = cloud_.particles();
+    const PtrList<dlmParticle>& particles = cloud_.particles();
     ++evaluation_;
     activeStep_ = GREAT;
     nActive_ = 0;
@@ -617,42 +621,43 @@ void Foam::particleContact::evaluate(const scalar h)
     onsetForce_ = Zero;
     exitForce_ = Zero;
 
-    // The overlap method reads the particles' positions
-    forAll(particles, i)
+    // Overlaps by blocks, each used while it is in cache
+    const label block = min(overlap_->blockSize(), pairs_.size());
+    overlaps_.setSize(block);
+    for (label start = 0; start < pairs_.size(); start += block)
     {
-        if (involved_[i])
+        SubList<pairOverlap> overlaps
+        (
+            overlaps_,
+            min(block, pairs_.size() - start)
+        );
+        overlap_->overlaps(pairs_, start, position_, orientation_, overlaps);
+        forAll(overlaps, b)
         {
-            particles[i].setPosition(position_[i]);
-            particles[i].setOrientation(orientation_[i]);
-        }
-    }
-
-    List<pairOverlap> overlaps;
-    overlap_->overlaps(pairs_, overlaps);
-    forAll(pairs_, k)
-    {
-        const pairOverlap& o = overlaps[k];
-        const label i = pairs_[k].first();
-        const label j = pairs_[k].second();
-        const contactLaw& law = laws_[pairLaws_[k]];
-        pairActive_[k] = o.volume > 0;
-        if (pairActive_[k])
-        {
-            applyContact
-            (
-                i, j, law,
-                law.tangential() == contactLaw::tangentialType::spring
-              ? &pairSpring_[k] : nullptr,
-                o.volume, o.depth, o.location, o.normal, h
-            );
-        }
-        else
-        {
-            pairSpring_[k] = Zero;
-        }
-        if (lubricationViscosity_ > 0)
-        {
-            applyLubrication(i, j, -o.depth, o.location, o.normal);
+            const pairOverlap& o = overlaps[b];
+            const label k = start + b;
+            const label i = pairs_[k].first();
+            const label j = pairs_[k].second();
+            const contactLaw& law = laws_[pairLaws_[k]];
+            pairActive_[k] = o.volume > 0;
+            if (pairActive_[k])
+            {
+                applyContact
+                (
+                    i, j, law,
+                    law.tangential() == contactLaw::tangentialType::spring
+                  ? &pairSpring_[k] : nullptr,
+                    o.volume, o.depth, o.location, o.normal, h
+                );
+            }
+            else
+            {
+                pairSpring_[k] = Zero;
+            }
+            if (lubricationViscosity_ > 0)
+            {
+                applyLubrication(i, j, -o.depth, o.location, o.normal);
+            }
         }
     }
 
@@ -892,6 +897,9 @@ void Foam::particleContact::evolve
     vectorField angularImpulse(n, Zero);
     vectorField halfVelocity(n, Zero);
     vectorField halfOmega(n, Zero);
+    // Forces of the opening half-kick of the present sub-step
+    vectorField force0(n, Zero);
+    vectorField torque0(n, Zero);
 
     const scalar hImpact = impactStep(deltaT, accel);
     // The first evaluation sees the step of the last sub-step for the
@@ -899,26 +907,62 @@ void Foam::particleContact::evolve
     correctionStep_ = lastSubStep_;
     evaluate(0);
 
+    // Sub-step from time t on (0: the step is done)
+    auto nextStep = [&](const scalar t)
+    {
+        return
+            t < deltaT*(1 - 1e-12)
+          ? min(deltaT - t, min(hImpact, activeStep_))
+          : 0;
+    };
+
     scalar t = 0;
     label nSub = 0;
     scalar hMin = deltaT;
     label maxActive = nActive_;
-    while (t < deltaT*(1 - 1e-12))
+    // Each visit of the particles closes the sub-step that ended (hClose,
+    // half-kick with the forces at its end) and opens the next (h,
+    // half-kick and drift): the particle arrays are read once per sub-step
+    scalar hClose = 0;
+    scalar h = nextStep(t);
+    while (true)
     {
-        const scalar h = min(deltaT - t, min(hImpact, activeStep_));
-        correctionStep_ = h;
-        lastSubStep_ = h;
-        hMin = min(hMin, h);
+        if (h > 0)
+        {
+            correctionStep_ = h;
+            lastSubStep_ = h;
+            hMin = min(hMin, h);
+        }
 
-        // Forces of the opening half-kick
-        const vectorField force0(force_ + exitForce_);
-        const vectorField torque0(torque_);
         forAll(particles, i)
         {
             if (!involved_[i])
             {
                 continue;
             }
+            if (hClose > 0 && inverseMass_[i] > 0)
+            {
+                velocity_[i] =
+                    halfVelocity[i]
+                  + 0.5*hClose
+                   *(accel[i] + inverseMass(i)*(force_[i] + onsetForce_[i]));
+                omega_[i] =
+                    halfOmega[i]
+                  + 0.5*hClose
+                   *(
+                        angularAccel[i]
+                      + (inverseInertia(i, orientation_[i]) & torque_[i])
+                    );
+                impulse[i] +=
+                    0.5*hClose*(force0[i] + force_[i] + onsetForce_[i]);
+                angularImpulse[i] += 0.5*hClose*(torque0[i] + torque_[i]);
+            }
+            if (h == 0)
+            {
+                continue;
+            }
+            force0[i] = force_[i] + exitForce_[i];
+            torque0[i] = torque_[i];
             if (inverseMass_[i] > 0)
             {
                 const vector dv
@@ -958,32 +1002,18 @@ void Foam::particleContact::evolve
                 }
             }
         }
+        if (h == 0)
+        {
+            break;
+        }
 
         evaluate(h);
         maxActive = max(maxActive, nActive_);
 
-        forAll(particles, i)
-        {
-            if (!involved_[i] || inverseMass_[i] == 0)
-            {
-                continue;
-            }
-            velocity_[i] =
-                halfVelocity[i]
-              + 0.5*h*(accel[i] + inverseMass(i)*(force_[i] + onsetForce_[i]));
-            omega_[i] =
-                halfOmega[i]
-              + 0.5*h
-               *(
-                    angularAccel[i]
-                  + (inverseInertia(i, orientation_[i]) & torque_[i])
-                );
-            impulse[i] += 0.5*h*(force0[i] + force_[i] + onsetForce_[i]);
-            angularImpulse[i] += 0.5*h*(torque0[i] + torque_[i]);
-        }
-
         t += h;
         ++nSub;
+        hClose = h;
+        h = nextStep(t);
     }
 
     forAll(particles, i)

@@ -154,11 +154,13 @@ bool Foam::particleShapes::disk::pairOverlap
     scalar& planeDistance
 ) const
 {
-    if (!isA<disk>(other))
+    // One cast (not isA and refCast): this runs for every touching pair
+    const disk* otherShape = dynamic_cast<const disk*>(&other);
+    if (!otherShape)
     {
         return false;
     }
-    const scalar otherRadius = refCast<const disk>(other).radius_;
+    const scalar otherRadius = otherShape->radius_;
     volume = overlapGeometry::circleLensArea(radius_, otherRadius, distance);
     planeDistance =
         distance > VSMALL

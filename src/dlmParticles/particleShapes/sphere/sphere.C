@@ -145,11 +145,13 @@ bool Foam::particleShapes::sphere::pairOverlap
     scalar& planeDistance
 ) const
 {
-    if (!isA<sphere>(other))
+    // One cast (not isA and refCast): this runs for every touching pair
+    const sphere* otherShape = dynamic_cast<const sphere*>(&other);
+    if (!otherShape)
     {
         return false;
     }
-    const scalar otherRadius = refCast<const sphere>(other).radius_;
+    const scalar otherRadius = otherShape->radius_;
     volume = overlapGeometry::sphereLensVolume(radius_, otherRadius, distance);
     planeDistance =
         distance > VSMALL

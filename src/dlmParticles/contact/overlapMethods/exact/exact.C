@@ -74,33 +74,46 @@ Foam::overlapMethods::exact::exact
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::overlapMethods::exact::prepare(const UList<labelPair>& pairs)
+{
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    shapes_.setSize(particles.size());
+    radii_.setSize(particles.size());
+    forAll(particles, i)
+    {
+        shapes_.set(i, &particles[i].shape());
+        radii_[i] = particles[i].shape().boundingRadius();
+    }
+}
+
+
 void Foam::overlapMethods::exact::overlaps
 (
     const UList<labelPair>& pairs,
-    List<pairOverlap>& result
+    const label start,
+    const UList<point>& positions,
+    const UList<quaternion>& orientations,
+    UList<pairOverlap>& result
 ) const
 {
-    const PtrList<dlmParticle>& particles = cloud_.particles();
-    result.setSize(pairs.size());
-
-    forAll(pairs, pairi)
+    forAll(result, b)
     {
-        const dlmParticle& pi = particles[pairs[pairi].first()];
-        const dlmParticle& pj = particles[pairs[pairi].second()];
-        pairOverlap& o = result[pairi];
+        const label i = pairs[start + b].first();
+        const label j = pairs[start + b].second();
+        const point& Xi = positions[i];
+        pairOverlap& o = result[b];
 
-        const scalar distance = mag(pj.position() - pi.position());
-        o.normal = centreNormal(pairs[pairi].first(), pairs[pairi].second());
-        o.depth =
-            pi.shape().boundingRadius() + pj.shape().boundingRadius() - distance;
+        const scalar distance = mag(positions[j] - Xi);
+        o.normal = centreNormal(Xi, positions[j]);
+        o.depth = radii_[i] + radii_[j] - distance;
 
         scalar planeDistance = 0;
         o.volume = 0;
         if (o.depth > 0)
         {
-            pi.shape().pairOverlap(pj.shape(), distance, o.volume, planeDistance);
+            shapes_[i].pairOverlap(shapes_[j], distance, o.volume, planeDistance);
         }
-        o.location = pi.position() + planeDistance*o.normal;
+        o.location = Xi + planeDistance*o.normal;
     }
 }
 

@@ -88,7 +88,10 @@ void Foam::overlapMethods::grid::prepare(const UList<labelPair>& pairs)
 void Foam::overlapMethods::grid::overlaps
 (
     const UList<labelPair>& pairs,
-    List<pairOverlap>& result
+    const label start,
+    const UList<point>& positions,
+    const UList<quaternion>& orientations,
+    UList<pairOverlap>& result
 ) const
 {
     const PtrList<dlmParticle>& particles = cloud_.particles();
@@ -99,36 +102,36 @@ void Foam::overlapMethods::grid::overlaps
     const label nDims = cloud_.twoD() ? 2 : 3;
 
     // Volume and first moment of each pair's doubly covered volume
-    scalarList sums(4*pairs.size(), Zero);
-    forAll(pairs, pairi)
+    scalarList sums(4*result.size(), Zero);
+    forAll(result, b)
     {
-        const dlmParticle& pi = particles[pairs[pairi].first()];
-        const dlmParticle& pj = particles[pairs[pairi].second()];
-        const tensor Ri(pi.R());
-        const tensor Rj(pj.R());
-        for (const label celli : commonCells_[pairi])
+        const label i = pairs[start + b].first();
+        const label j = pairs[start + b].second();
+        const particleShape& shapei = particles[i].shape();
+        const particleShape& shapej = particles[j].shape();
+        const tensor Ri(orientations[i].R());
+        const tensor Rj(orientations[j].R());
+        for (const label celli : commonCells_[start + b])
         {
-            const scalar fi = pi.shape().boxFraction
+            const scalar fi = shapei.boxFraction
             (
-                boxes[celli], pi.position(), Ri, split,
-                cloud_.leafSize(pairs[pairi].first())
+                boxes[celli], positions[i], Ri, split, cloud_.leafSize(i)
             );
             if (fi <= 0)
             {
                 continue;
             }
-            const scalar fj = pj.shape().boxFraction
+            const scalar fj = shapej.boxFraction
             (
-                boxes[celli], pj.position(), Rj, split,
-                cloud_.leafSize(pairs[pairi].second())
+                boxes[celli], positions[j], Rj, split, cloud_.leafSize(j)
             );
             const scalar doubled = (fi + fj - 1)*V[celli];
             if (doubled > 0)
             {
-                sums[4*pairi] += doubled;
+                sums[4*b] += doubled;
                 for (direction d = 0; d < 3; ++d)
                 {
-                    sums[4*pairi + 1 + d] += doubled*C[celli][d];
+                    sums[4*b + 1 + d] += doubled*C[celli][d];
                 }
             }
         }
@@ -137,26 +140,24 @@ void Foam::overlapMethods::grid::overlaps
     Pstream::listCombineScatter(sums);
 
     const scalar depth = cloud_.meshDepth();
-    result.setSize(pairs.size());
-    forAll(pairs, pairi)
+    forAll(result, b)
     {
-        const label i = pairs[pairi].first();
-        const label j = pairs[pairi].second();
+        const label i = pairs[start + b].first();
+        const label j = pairs[start + b].second();
         const scalar Ri = particles[i].shape().boundingRadius();
         const scalar Rj = particles[j].shape().boundingRadius();
-        pairOverlap& o = result[pairi];
+        pairOverlap& o = result[b];
 
-        o.volume = nDims == 3 ? sums[4*pairi] : sums[4*pairi]/depth;
+        o.volume = nDims == 3 ? sums[4*b] : sums[4*b]/depth;
         o.depth = equivalentDepth(o.volume, Ri*Rj/(Ri + Rj), nDims);
-        o.normal = centreNormal(i, j);
+        o.normal = centreNormal(positions[i], positions[j]);
         o.location =
-            sums[4*pairi] > 0
-          ? point(sums[4*pairi + 1], sums[4*pairi + 2], sums[4*pairi + 3])
-           /sums[4*pairi]
-          : 0.5*(particles[i].position() + particles[j].position());
+            sums[4*b] > 0
+          ? point(sums[4*b + 1], sums[4*b + 2], sums[4*b + 3])/sums[4*b]
+          : 0.5*(positions[i] + positions[j]);
         if (nDims == 2)
         {
-            o.location.z() = particles[i].position().z();
+            o.location.z() = positions[i].z();
         }
     }
 }

@@ -53,16 +53,9 @@ Foam::autoPtr<Foam::overlapMethod> Foam::overlapMethod::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::overlapMethod::centreNormal
-(
-    const label i,
-    const label j
-) const
+Foam::vector Foam::overlapMethod::centreNormal(const point& a, const point& b)
 {
-    const vector d
-    (
-        cloud_.particles()[j].position() - cloud_.particles()[i].position()
-    );
+    const vector d(b - a);
     const scalar distance = mag(d);
     return distance > VSMALL ? d/distance : vector(Zero);
 }
