@@ -137,6 +137,7 @@ void Foam::particleContact::gatherConstants()
     radius_.setSize(particles.size());
     moving_.setSize(particles.size());
     isotropic_.setSize(particles.size());
+    isotropicInverseInertia_.setSize(particles.size());
     forAll(particles, i)
     {
         const dlmParticle& p = particles[i];
@@ -158,23 +159,24 @@ void Foam::particleContact::gatherConstants()
         isotropic_[i] =
             I.xy() == 0 && I.xz() == 0 && I.yz() == 0
          && I.xx() == I.yy() && I.yy() == I.zz();
+        isotropicInverseInertia_[i] = isotropic_[i] ? I.xx() : 0;
     }
 }
 
 
-Foam::tensor Foam::particleContact::inverseInertia
+Foam::vector Foam::particleContact::angularAcceleration
 (
     const label i,
-    const quaternion& q
+    const quaternion& q,
+    const vector& T
 ) const
 {
-    const symmTensor& bodyInverse = inverseInertiaBody_[i];
     if (isotropic_[i])
     {
-        return tensor(bodyInverse);
+        return isotropicInverseInertia_[i]*T;
     }
     const tensor R(q.R());
-    return R & bodyInverse & R.T();
+    return (R & inverseInertiaBody_[i] & R.T()) & T;
 }
 
 
@@ -616,10 +618,6 @@ void Foam::particleContact::evaluate(const scalar h)
     ++evaluation_;
     activeStep_ = GREAT;
     nActive_ = 0;
-    force_ = Zero;
-    torque_ = Zero;
-    onsetForce_ = Zero;
-    exitForce_ = Zero;
 
     // Overlaps by blocks, each used while it is in cache
     const label block = min(overlap_->blockSize(), pairs_.size());
@@ -879,6 +877,10 @@ void Foam::particleContact::evolve
     torque_.setSize(n);
     onsetForce_.setSize(n);
     exitForce_.setSize(n);
+    force_ = Zero;
+    torque_ = Zero;
+    onsetForce_ = Zero;
+    exitForce_ = Zero;
     forAll(particles, i)
     {
         const dlmParticle& p = particles[i];
@@ -951,7 +953,7 @@ void Foam::particleContact::evolve
                   + 0.5*hClose
                    *(
                         angularAccel[i]
-                      + (inverseInertia(i, orientation_[i]) & torque_[i])
+                      + angularAcceleration(i, orientation_[i], torque_[i])
                     );
                 impulse[i] +=
                     0.5*hClose*(force0[i] + force_[i] + onsetForce_[i]);
@@ -974,7 +976,7 @@ void Foam::particleContact::evolve
                     0.5*h
                    *(
                         angularAccel[i]
-                      + (inverseInertia(i, orientation_[i]) & torque_[i])
+                      + angularAcceleration(i, orientation_[i], torque_[i])
                     )
                 );
                 halfVelocity[i] = velocity_[i] + dv;
@@ -1001,6 +1003,11 @@ void Foam::particleContact::evolve
                     orientation_[i].normalize();
                 }
             }
+            // The forces of the next evaluation add up from zero
+            force_[i] = Zero;
+            torque_[i] = Zero;
+            onsetForce_[i] = Zero;
+            exitForce_[i] = Zero;
         }
         if (h == 0)
         {
