@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "disk.H"
+#include <typeinfo>
 #include "cutCellFraction.H"
 #include "overlapGeometry.H"
 #include "mathematicalConstants.H"
@@ -154,13 +155,13 @@ bool Foam::particleShapes::disk::pairOverlap
     scalar& planeDistance
 ) const
 {
-    // One cast (not isA and refCast): this runs for every touching pair
-    const disk* otherShape = dynamic_cast<const disk*>(&other);
-    if (!otherShape)
+    // The exact type, not a dynamic_cast (a tenth of the contact
+    // sub-step's instructions): this runs for every touching pair
+    if (typeid(other) != typeid(disk))
     {
         return false;
     }
-    const scalar otherRadius = otherShape->radius_;
+    const scalar otherRadius = static_cast<const disk&>(other).radius_;
     volume = overlapGeometry::circleLensArea(radius_, otherRadius, distance);
     planeDistance =
         distance > VSMALL
