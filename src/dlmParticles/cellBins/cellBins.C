@@ -27,6 +27,24 @@ void Foam::cellBins::binRange
 }
 
 
+template<class BinOp>
+void Foam::cellBins::forAllBins(const boundBox& bb, const BinOp& op) const
+{
+    Vector<label> lo, hi;
+    binRange(bb, lo, hi);
+    for (label k = lo.z(); k <= hi.z(); ++k)
+    {
+        for (label j = lo.y(); j <= hi.y(); ++j)
+        {
+            for (label i = lo.x(); i <= hi.x(); ++i)
+            {
+                op(i + nBins_.x()*(j + nBins_.y()*k));
+            }
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::cellBins::cellBins(const List<boundBox>& cellBoxes)
@@ -46,52 +64,39 @@ Foam::cellBins::cellBins(const List<boundBox>& cellBoxes)
     }
 
     boundBox bounds;
-    scalar volume = 0;
     for (const boundBox& bb : cellBoxes_)
     {
         bounds.add(bb);
-        volume += cmptProduct(bb.span());
     }
     origin_ = bounds.min();
 
-    // A flat mesh (2D, one cell thick) has one bin across its thickness:
-    // count its cells by their area
+    // The mean cell size if the cells filled the bounds; a flat mesh (2D,
+    // one cell thick) has one bin across its thickness and is measured by
+    // its area
     const vector span(bounds.span());
-    scalar extent = 0;
+    const scalar extent = cmptMax(span);
     label nDims = 0;
-    scalar cellMeasure = 0;
-    {
-        scalar product = 1;
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            extent = max(extent, span[d]);
-        }
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            if (span[d] > 1e-3*extent)
-            {
-                ++nDims;
-                product *= span[d];
-            }
-        }
-        cellMeasure = product/nCells;
-    }
-    binSize_ = Foam::pow(cellMeasure, 1.0/nDims);
-    if (nDims == 3)
-    {
-        binSize_ = max(binSize_, Foam::cbrt(volume/nCells));
-    }
+    scalar measure = 1;
     for (direction d = 0; d < vector::nComponents; ++d)
     {
-        nBins_[d] = max(label(1), label(std::ceil(span[d]/binSize_)));
+        if (span[d] > 1e-3*extent)
+        {
+            ++nDims;
+            measure *= span[d];
+        }
     }
-    while (scalar(nBins_.x())*nBins_.y()*nBins_.z() > 4.0*nCells)
+    binSize_ = Foam::pow(measure/nCells, 1.0/nDims);
+    auto countBins = [&]()
     {
-        binSize_ *= 1.25;
         for (direction d = 0; d < vector::nComponents; ++d)
         {
             nBins_[d] = max(label(1), label(std::ceil(span[d]/binSize_)));
         }
+        return scalar(nBins_.x())*nBins_.y()*nBins_.z();
+    };
+    while (countBins() > 4.0*nCells)
+    {
+        binSize_ *= 1.25;
     }
 
     // A box is binned shrunk by a small fraction of itself: a cell whose
@@ -104,40 +109,25 @@ Foam::cellBins::cellBins(const List<boundBox>& cellBoxes)
 
     const label nAllBins = nBins_.x()*nBins_.y()*nBins_.z();
     labelList counts(nAllBins + 1, 0);
-    Vector<label> lo, hi;
-    for (label pass = 0; pass < 2; ++pass)
+    forAll(cellBoxes_, celli)
     {
-        forAll(cellBoxes_, celli)
+        forAllBins(shrunk(cellBoxes_[celli]), [&](const label b)
         {
-            binRange(shrunk(cellBoxes_[celli]), lo, hi);
-            for (label k = lo.z(); k <= hi.z(); ++k)
-            {
-                for (label j = lo.y(); j <= hi.y(); ++j)
-                {
-                    for (label i = lo.x(); i <= hi.x(); ++i)
-                    {
-                        const label b = i + nBins_.x()*(j + nBins_.y()*k);
-                        if (pass == 0)
-                        {
-                            ++counts[b + 1];
-                        }
-                        else
-                        {
-                            binCells_[counts[b]++] = celli;
-                        }
-                    }
-                }
-            }
-        }
-        if (pass == 0)
+            ++counts[b + 1];
+        });
+    }
+    for (label b = 0; b < nAllBins; ++b)
+    {
+        counts[b + 1] += counts[b];
+    }
+    binStarts_ = counts;
+    binCells_.setSize(counts[nAllBins]);
+    forAll(cellBoxes_, celli)
+    {
+        forAllBins(shrunk(cellBoxes_[celli]), [&](const label b)
         {
-            for (label b = 0; b < nAllBins; ++b)
-            {
-                counts[b + 1] += counts[b];
-            }
-            binStarts_ = counts;
-            binCells_.setSize(counts[nAllBins]);
-        }
+            binCells_[counts[b]++] = celli;
+        });
     }
 }
 
@@ -176,28 +166,18 @@ void Foam::cellBins::findBox
     // Cells are binned shrunk: a cell that touches the query at a bin edge
     // lies in the bin on the other side, so the range is taken widened
     const vector eps(vector::uniform(1e-6*binSize_));
-    Vector<label> lo, hi;
-    binRange(boundBox(bb.min() - eps, bb.max() + eps), lo, hi);
-    for (label k = lo.z(); k <= hi.z(); ++k)
+    forAllBins(boundBox(bb.min() - eps, bb.max() + eps), [&](const label b)
     {
-        for (label j = lo.y(); j <= hi.y(); ++j)
+        for (label s = binStarts_[b]; s < binStarts_[b + 1]; ++s)
         {
-            for (label i = lo.x(); i <= hi.x(); ++i)
+            const label celli = binCells_[s];
+            if (stamp_[celli] != query_ && bb.overlaps(cellBoxes_[celli]))
             {
-                const label b = i + nBins_.x()*(j + nBins_.y()*k);
-                for (label s = binStarts_[b]; s < binStarts_[b + 1]; ++s)
-                {
-                    const label celli = binCells_[s];
-                    if (stamp_[celli] != query_ && bb.overlaps(cellBoxes_[celli]))
-                    {
-                        stamp_[celli] = query_;
-                        found.append(celli);
-                    }
-                }
+                stamp_[celli] = query_;
+                found.append(celli);
             }
         }
-    }
+    });
 }
-
 
 // ************************************************************************* //
