@@ -89,6 +89,30 @@ def test_sphere_bounces_off_a_wall_with_the_requested_restitution(tmp_path, foam
     assert h[:, 3].min() > 0.002*0.95
 
 
+def test_sphere_rests_as_deep_wherever_it_sits_on_the_wall_faces(tmp_path, foam_env):
+    """The floor is 4 x 4 mesh faces, each cut into triangles. A sphere at
+    rest on it sinks to the overlap where the one contact carries its
+    weight, the same over a face's interior as within round-off of a corner
+    where eight triangles meet (which must not each add a contact)."""
+    sphere = "constant/particleProperties", "particles/left"
+    R = 0.002
+    rest = {}
+    for name, xy in (("interior", "0.0021 -0.0013"), ("corner", "1e-6 3e-7")):
+        case = dry_case(tmp_path, foam_env, name, {
+            ("constant/g", "value"): "(0 0 -9.81)",
+            ("system/controlDict", "endTime"): 0.01,
+            ("system/controlDict", "writeInterval"): 1000,
+            (sphere[0], f"{sphere[1]}/position"): f"({xy} {R})",
+            (sphere[0], f"{sphere[1]}/velocity"): "(0 0 0)",
+        }, remove=["particles/right"])
+        case.run("dlmDEMFoam")
+        h = case.history()["left"]
+        assert np.abs(h[-1, 4:7]).max() < 1e-6
+        rest[name] = R - h[-1, 3]
+    assert rest["interior"] > 0
+    assert rest["corner"] == pytest.approx(rest["interior"], rel=1e-3)
+
+
 def tilted_gravity(angle_deg):
     a = math.radians(angle_deg)
     return f"({9.81*math.sin(a)} 0 {-9.81*math.cos(a)})"

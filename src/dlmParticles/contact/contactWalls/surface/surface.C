@@ -225,8 +225,31 @@ void Foam::contactWalls::surface::contacts
         }
     }
 
-    // Neighbouring faces or rim edges give the same point once
+    // One contact per facet, at its nearest point: faces of the facet next
+    // to the one under the centroid pass the normal test when the centroid
+    // is within round-off of their edge or corner, at a point apart from it
     const label start = found.size();
+    for (const wallContact& c : faceHits)
+    {
+        bool seen = false;
+        for (label i = start; i < found.size() && !seen; ++i)
+        {
+            if (found[i].feature == c.feature)
+            {
+                seen = true;
+                if (c.distance < found[i].distance)
+                {
+                    found[i] = c;
+                }
+            }
+        }
+        if (!seen)
+        {
+            found.append(c);
+        }
+    }
+
+    // Neighbouring rim edges give the same point once
     auto merged = [&](const wallContact& c)
     {
         for (label i = start; i < found.size(); ++i)
@@ -238,14 +261,6 @@ void Foam::contactWalls::surface::contacts
         }
         return false;
     };
-
-    for (const wallContact& c : faceHits)
-    {
-        if (!merged(c))
-        {
-            found.append(c);
-        }
-    }
     forAll(rimHits, hiti)
     {
         bool onTouchedPlane = false;
