@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dlmParticleCloud.H"
+#include "rigidProjection.H"
 #include "zeroGradientFvPatchFields.H"
 #include "surfaceFields.H"
 #include "IFstream.H"
@@ -550,6 +551,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     cellIsBox_(mesh.nCells()),
     boundaryCell_(mesh.nCells(), false),
     touchingBoundary_(false),
+    follower_(nullptr),
     resolved_(!dry),
     splitDirections_(Zero),
     alpha_
@@ -732,6 +734,41 @@ void Foam::dlmParticleCloud::move()
     touchingBoundary_ = false;
     if (contact_.valid())
     {
+        // The projected motion holds the last step's mean contact loads,
+        // which the mixture took this step as a prediction (the rigid
+        // projection's source): they come off, the sub-steps add the
+        // actual contact, and the rigid projection then gives the
+        // particle's cells its velocity at the end of the step. The
+        // prediction makes a resting particle's load on its contact exact
+        // whatever the mixture's inertia in its cells.
+        if (follower_)
+        {
+            for (dlmParticle& p : particles_)
+            {
+                if (!p.isFree())
+                {
+                    continue;
+                }
+                const scalar mass = p.density()*p.shape().volume();
+                const tensor R(p.R());
+                const tensor inertia
+                (
+                    p.density()*(R & p.shape().inertiaPerUnitDensity() & R.T())
+                );
+                p.setVelocities
+                (
+                    p.velocity() - deltaT/mass*p.contactForce(),
+                    p.angularVelocity()
+                  - deltaT*(inv(inertia) & p.contactTorque())
+                );
+                p.setLoads
+                (
+                    p.force() - p.contactForce(),
+                    p.torque() - p.contactTorque()
+                );
+            }
+        }
+
         // Held accelerations of the step: fluid and gravity, as projected
         vectorField accel(particles_.size(), Zero);
         vectorField angularAccel(particles_.size(), Zero);
@@ -746,6 +783,10 @@ void Foam::dlmParticleCloud::move()
             }
         }
         contact_->evolve(deltaT, accel, angularAccel);
+        if (follower_)
+        {
+            follower_->followParticles();
+        }
     }
     else
     {

@@ -13,6 +13,7 @@
 #include "scalarMatrices.H"
 #include "cpuTime.H"
 #include "syncTools.H"
+#include "fvcFlux.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -1179,10 +1180,13 @@ Foam::scalar Foam::fv::rigidProjection::ddtRate(const volVectorField& U)
 void Foam::fv::rigidProjection::correct(volVectorField& U)
 {
     const cpuTime timer;
+    dlmParticleCloud& cloud =
+        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
     if (mixedCells_ == mixedCellsType::interpolated)
     {
         updateRegions();
         correctInterpolated(U);
+        cloud.setFollower(*this);
     }
     else
     {
@@ -1190,10 +1194,52 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
     }
 
     U.correctBoundaryConditions();
-    dlmParticleCloud& cloud =
-        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
     cloud.setProjected();
     cloud.addWorkTime(timer.elapsedCpuTime());
+}
+
+
+void Foam::fv::rigidProjection::followParticles()
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const PtrList<dlmParticle>& particles = cloud.particles();
+
+    volVectorField change
+    (
+        IOobject("rigidChange", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedVector(dimVelocity, Zero)
+    );
+    bool changed = false;
+    forAll(projectedVelocity_, i)
+    {
+        const dlmParticle& p = particles[i];
+        const vector dU(p.velocity() - projectedVelocity_[i]);
+        const vector dOmega(p.angularVelocity() - projectedOmega_[i]);
+        if (!p.isFree() || (dU == vector::zero && dOmega == vector::zero))
+        {
+            continue;
+        }
+        changed = true;
+        const DynamicList<label>& cells = regionCells_[i];
+        forAll(cells, k)
+        {
+            change[cells[k]] +=
+                regionWeights_[i][k]*dU + (dOmega ^ regionArms_[i][k]);
+        }
+    }
+    if (!returnReduce(changed, orOp<bool>()))
+    {
+        return;
+    }
+    change.correctBoundaryConditions();
+
+    volVectorField& U = mesh_.lookupObjectRef<volVectorField>(fieldNames_[0]);
+    surfaceScalarField& phi = mesh_.lookupObjectRef<surfaceScalarField>("phi");
+    U.primitiveFieldRef() += change.primitiveField();
+    U.correctBoundaryConditions();
+    phi += fvc::flux(change);
 }
 
 
@@ -1339,6 +1385,8 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
     // Targets from the provisional velocity first: samples may be forced
     // cells of another particle
     List<vectorField> targets(particles.size());
+    projectedVelocity_.setSize(particles.size());
+    projectedOmega_.setSize(particles.size());
     forAll(particles, i)
     {
         dlmParticle& p = particles[i];
@@ -1367,6 +1415,8 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
             solveRigid(A11, A12, A21, A22, b1, b2, twoD, Up, omega);
             p.setVelocities(Up, omega);
         }
+        projectedVelocity_[i] = p.velocity();
+        projectedOmega_[i] = p.angularVelocity();
 
         const vector& Up = p.velocity();
         const vector& omega = p.angularVelocity();
