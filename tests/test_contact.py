@@ -304,6 +304,32 @@ def test_settling_sphere_lands_and_comes_to_rest(tmp_path, foam_env):
     assert late[-1, 12] == pytest.approx(1000*V*9.81, rel=0.01)
 
 
+def test_restart_during_a_landing_continues_the_trajectory(tmp_path, foam_env):
+    """Restarted from 0.06 s, while the sphere lands on the floor through
+    lubrication and contact: the written velocity and flux already hold the
+    contact's change of the particle's motion, the particle the prediction
+    of the next step, so the run continues as if never stopped."""
+    def make(name):
+        case = landing_case(tmp_path, foam_env, name)
+        case.set("system/controlDict", "endTime", 0.1)
+        case.set("system/controlDict", "writeInterval", 12)
+        return case
+
+    full = make("full")
+    full.run("pimpleDLMFoam")
+    a = full.history()["sphere"]
+    contact = a[(a[:, 0] > 0.055) & (a[:, 0] < 0.065), 18]
+    assert np.abs(contact).min() > 0
+    restarted = make("restarted")
+    shutil.copytree(full.path / "0.06", restarted.path / "0.06")
+    restarted.run("pimpleDLMFoam")
+    b = restarted.history("0.06")["sphere"]
+    tail = a[a[:, 0] > 0.06 + 1e-9]
+    assert len(b) == len(tail) >= 5
+    assert np.abs(b[:, 1:10] - tail[:, 1:10]).max() < 1e-12
+    assert np.abs(b[:, 16:19] - tail[:, 16:19]).max() < 1e-9*np.abs(tail[:, 18]).max()
+
+
 def test_sphere_rests_on_a_sieve_the_fluid_passes(tmp_path, foam_env):
     """A contact-only plane across the box at z = 15 mm (a sieve: the fluid
     passes through, no lubrication): the sphere lands on it and, at rest,
