@@ -118,15 +118,18 @@ def tilted_gravity(angle_deg):
     return f"({9.81*math.sin(a)} 0 {-9.81*math.cos(a)})"
 
 
-@pytest.mark.parametrize("tangential", ["spring", "coulomb"])
-def test_spinning_sphere_ends_up_rolling(tmp_path, foam_env, tangential):
+@pytest.mark.parametrize("tangential, limit", [("spring", "total"), ("spring", "spring"),
+                                               ("coulomb", "total")])
+def test_spinning_sphere_ends_up_rolling(tmp_path, foam_env, tangential, limit):
     """A sphere spinning at omega0 about y set on the floor: friction turns it
     into rolling at v = 2/7 omega0 R (angular momentum about the contact
-    point is conserved), whatever the friction model."""
+    point is conserved), whatever the friction model and whatever the
+    Coulomb limit bounds."""
     sphere = "constant/particleProperties", "particles/left"
     R, omega0 = 0.002, 50.0
     case = dry_case(tmp_path, foam_env, "spin", {
         **both_pairs("tangential", tangential),
+        **both_pairs("frictionLimit", limit),
         ("constant/g", "value"): "(0 0 -9.81)",
         ("system/controlDict", "endTime"): 0.1,
         ("system/controlDict", "deltaT"): 5e-4,

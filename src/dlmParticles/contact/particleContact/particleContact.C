@@ -447,6 +447,18 @@ Foam::vector Foam::particleContact::tangentialForce
     xi += sliding*h;
 
     const scalar kt = law.tangentialStiffnessRatio()*stiffness;
+    if (law.frictionLimit() == contactLaw::frictionLimitType::spring)
+    {
+        const scalar magSpring = kt*mag(xi);
+        if (magSpring > limit)
+        {
+            // Sliding: the spring alone, at what friction allows
+            xi *= limit/magSpring;
+            return -kt*xi;
+        }
+        return -kt*xi - ct*sliding;
+    }
+
     vector F(-kt*xi - ct*sliding);
     const scalar magF = mag(F);
     if (magF > limit)

@@ -21,6 +21,13 @@ Foam::contactLaw::tangentialTypeNames
     { tangentialType::spring, "spring" },
 });
 
+const Foam::Enum<Foam::contactLaw::frictionLimitType>
+Foam::contactLaw::frictionLimitTypeNames
+({
+    { frictionLimitType::total, "total" },
+    { frictionLimitType::spring, "spring" },
+});
+
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -159,6 +166,15 @@ Foam::contactLaw::contactLaw
             tangentialType::spring
         )
     ),
+    frictionLimit_
+    (
+        frictionLimitTypeNames.getOrDefault
+        (
+            "frictionLimit",
+            dict,
+            frictionLimitType::total
+        )
+    ),
     tangentialStiffnessRatio_
     (
         dict.getOrDefault<scalar>("tangentialStiffnessRatio", 2.0/7.0)
@@ -202,7 +218,7 @@ Foam::wordList Foam::contactLaw::keywords() const
     wordList words
     ({
         "materials", "law", "restitution", "friction", "tangential",
-        "tangentialStiffnessRatio", "tangentialDampingRatio",
+        "frictionLimit", "tangentialStiffnessRatio", "tangentialDampingRatio",
         "clipNormalForce", "stiffness", "contactTime"
     });
     if (exponent() != 1)
