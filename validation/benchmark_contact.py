@@ -169,7 +169,7 @@ def main():
         return
     # The same law in both codes: LIGGGHTS' hooke/stiffness with history
     law = (f"law linearSpringDashpot; stiffness {KN}; restitution 0.5; friction 0.5;"
-           f" tangential spring; clipNormalForce false;")
+           f" tangential spring; frictionLimit spring; clipNormalForce false;")
     rows = []
     for n in sizes:
         N = n**3

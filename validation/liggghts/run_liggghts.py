@@ -187,7 +187,22 @@ def restitution():
 
 
 # --------------------------------------------------------------------- silo
-def silo_script():
+# Seeds of the insertion (LIGGGHTS wants primes above 10000): the committed
+# packing's, then those of the ensemble's other fills
+SILO_SEEDS = (15485863, 32452843, 32452867)
+
+
+def prime_seeds(member):
+    """Three primes above 10000 for ensemble member > 0."""
+    primes, candidate = [], 100003 + 2*7919*member
+    while len(primes) < 3:
+        if all(candidate % q for q in range(2, int(candidate**0.5) + 1)):
+            primes.append(candidate)
+        candidate += 2
+    return tuple(primes)
+
+
+def silo_script(seeds=SILO_SEEDS, discharge_time=SILO["discharge_time"]):
     s = SILO
     w, n = s["width"]/2, s["n_particles"]
     z0, z1 = s["insert_zone"]
@@ -202,9 +217,9 @@ def silo_script():
         script += wall(name, plane, pos)
     return script + f"""\
 region          insert block {-w + margin!r} {w - margin!r} {-w + margin!r} {w - margin!r} {z0!r} {z1!r} units box
-fix             pts all particletemplate/sphere 15485863 atom_type 1 density constant {DENSITY!r} radius constant {RADIUS!r}
-fix             pdd all particledistribution/discrete 32452843 1 pts 1.0
-fix             ins all insert/pack seed 32452867 distributiontemplate pdd maxattempt 1000 insert_every once overlapcheck yes all_in yes vel constant 0 0 0 particles_in_region {n} region insert
+fix             pts all particletemplate/sphere {seeds[0]} atom_type 1 density constant {DENSITY!r} radius constant {RADIUS!r}
+fix             pdd all particledistribution/discrete {seeds[1]} 1 pts 1.0
+fix             ins all insert/pack seed {seeds[2]} distributiontemplate pdd maxattempt 1000 insert_every once overlapcheck yes all_in yes vel constant 0 0 0 particles_in_region {n} region insert
 fix             integr all nve/sphere
 compute         rke all erotate/sphere
 thermo_style    custom step atoms ke c_rke
@@ -233,7 +248,7 @@ region          above block INF INF INF INF 0 INF units box
 variable        inside equal count(all,above)
 variable        st equal step
 fix             out all print {every} "${{st}} ${{inside}}" file discharge.dat screen no title "# step particles_above_floor"
-run             {round(s['discharge_time']/DT)}
+run             {round(discharge_time/DT)}
 """
 
 
@@ -248,30 +263,40 @@ def bulk_density(xyz):
     return core.sum()*MASS/volume
 
 
-def silo():
-    case = RUNS / "silo"
+def silo_run(case, seeds=SILO_SEEDS, discharge_time=SILO["discharge_time"]):
+    """Fill and discharge in `case`: the settled packing (x y z radius), the
+    discharged mass against time, the log's loop times."""
     case.mkdir(parents=True, exist_ok=True)
     write_stl(case / "floor.stl",
               plate_with_hole(SILO["width"], SILO["orifice"], SILO["orifice_segments"]))
-    log = liggghts(case, silo_script())
-
+    log = liggghts(case, silo_script(seeds, discharge_time))
     _, packing = read_dump(case / "packing.dump")
     xyzr = packing[0][:, 1:5]
+    step, inside = np.loadtxt(case / "discharge.dat", unpack=True)
+    t = np.concatenate([[0.0], step*DT])
+    mass = np.concatenate([[0.0], (len(xyzr) - inside)*MASS])
+    return xyzr, t, mass, loop_times(log)
+
+
+def silo_rate(t, mass, n):
+    """Discharge rate fitted over SILO["fit_window"] of the charge of n."""
+    lo, hi = SILO["fit_window"]
+    return fit_rate(t, mass, lo*n*MASS, hi*n*MASS)
+
+
+def silo():
+    xyzr, t, mass, runs = silo_run(RUNS / "silo")
     np.savetxt(HERE / "silo_packing.dat", xyzr, fmt="%.9e",
                header=f"settled silo packing (LIGGGHTS, scenes.SILO): {len(xyzr)} spheres\n"
                       "x y z radius [m]")
     rho_bulk = bulk_density(xyzr[:, :3])
 
-    step, inside = np.loadtxt(case / "discharge.dat", unpack=True)
-    t = np.concatenate([[0.0], step*DT])
-    mass = np.concatenate([[0.0], (len(xyzr) - inside)*MASS])
     charge, final = len(xyzr)*MASS, mass[-1]
     lo, hi = SILO["fit_window"]
-    rate = fit_rate(t, mass, lo*charge, hi*charge)
+    rate = silo_rate(t, mass, len(xyzr))
     rate_20_80 = fit_rate(t, mass, 0.2*final, 0.8*final)
     predicted = beverloo(rho_bulk, **SILO["beverloo"])
 
-    runs = loop_times(log)
     fill = [r for r in runs if r[0] == "fill"]
     discharge = [r for r in runs if r[0] == "discharge"]
     fill_wall, fill_steps = sum(r[1] for r in fill), sum(r[2] for r in fill)
