@@ -43,6 +43,16 @@ def dry_case(tmp_path, env, name, settings=None, remove=()):
     return case
 
 
+def lone_sphere(tmp_path, env, name, position, velocity="(0 0 0)", settings=None):
+    """The dry box with its left sphere alone, at the given position and
+    velocity (settings as dry_case's)."""
+    return dry_case(tmp_path, env, name, {
+        ("constant/particleProperties", "particles/left/position"): position,
+        ("constant/particleProperties", "particles/left/velocity"): velocity,
+        **(settings or {}),
+    }, remove=["particles/right"])
+
+
 def both_pairs(entry, value):
     return {("constant/particleProperties", f"{PAIRS}/{pair}/{entry}"): value
             for pair in ("particleParticle", "particleWall")}
@@ -76,12 +86,8 @@ def test_head_on_collision_has_the_requested_restitution(tmp_path, foam_env, law
 
 @pytest.mark.parametrize("e", [0.3, 0.9])
 def test_sphere_bounces_off_a_wall_with_the_requested_restitution(tmp_path, foam_env, e):
-    sphere = "constant/particleProperties", "particles/left"
-    case = dry_case(tmp_path, foam_env, "wall", {
-        **both_pairs("restitution", e),
-        (sphere[0], f"{sphere[1]}/position"): "(0 0 0.0025)",
-        (sphere[0], f"{sphere[1]}/velocity"): "(0 0 -1)",
-    }, remove=["particles/right"])
+    case = lone_sphere(tmp_path, foam_env, "wall", "(0 0 0.0025)", "(0 0 -1)",
+                       both_pairs("restitution", e))
     case.run("dlmDEMFoam")
     h = case.history()["left"]
     assert h[-1, 6] == pytest.approx(e, rel=0.01)
@@ -94,17 +100,14 @@ def test_sphere_rests_as_deep_wherever_it_sits_on_the_wall_faces(tmp_path, foam_
     rest on it sinks to the overlap where the one contact carries its
     weight, the same over a face's interior as within round-off of a corner
     where eight triangles meet (which must not each add a contact)."""
-    sphere = "constant/particleProperties", "particles/left"
     R = 0.002
     rest = {}
     for name, xy in (("interior", "0.0021 -0.0013"), ("corner", "1e-6 3e-7")):
-        case = dry_case(tmp_path, foam_env, name, {
+        case = lone_sphere(tmp_path, foam_env, name, f"({xy} {R})", settings={
             ("constant/g", "value"): "(0 0 -9.81)",
             ("system/controlDict", "endTime"): 0.01,
             ("system/controlDict", "writeInterval"): 1000,
-            (sphere[0], f"{sphere[1]}/position"): f"({xy} {R})",
-            (sphere[0], f"{sphere[1]}/velocity"): "(0 0 0)",
-        }, remove=["particles/right"])
+        })
         case.run("dlmDEMFoam")
         h = case.history()["left"]
         assert np.abs(h[-1, 4:7]).max() < 1e-6
@@ -125,19 +128,17 @@ def test_spinning_sphere_ends_up_rolling(tmp_path, foam_env, tangential, limit):
     into rolling at v = 2/7 omega0 R (angular momentum about the contact
     point is conserved), whatever the friction model and whatever the
     Coulomb limit bounds."""
-    sphere = "constant/particleProperties", "particles/left"
     R, omega0 = 0.002, 50.0
-    case = dry_case(tmp_path, foam_env, "spin", {
+    case = lone_sphere(tmp_path, foam_env, "spin", f"(-0.005 0 {R*(1 - 1e-4)})", settings={
         **both_pairs("tangential", tangential),
         **both_pairs("frictionLimit", limit),
         ("constant/g", "value"): "(0 0 -9.81)",
         ("system/controlDict", "endTime"): 0.1,
         ("system/controlDict", "deltaT"): 5e-4,
         ("system/controlDict", "writeInterval"): 1000,
-        (sphere[0], f"{sphere[1]}/position"): f"(-0.005 0 {R*(1 - 1e-4)})",
-        (sphere[0], f"{sphere[1]}/velocity"): "(0 0 0)",
-        (sphere[0], f"{sphere[1]}/angularVelocity"): f"(0 {omega0} 0)",
-    }, remove=["particles/right"])
+        ("constant/particleProperties", "particles/left/angularVelocity"):
+            f"(0 {omega0} 0)",
+    })
     case.run("dlmDEMFoam")
     h = case.history()["left"]
     assert h[-1, 4] == pytest.approx(2/7*omega0*R, rel=0.01)
@@ -148,16 +149,13 @@ def test_spinning_sphere_ends_up_rolling(tmp_path, foam_env, tangential, limit):
 def test_sphere_rolls_down_a_slope_without_slipping(tmp_path, foam_env):
     """On a 20 degree slope with friction 0.3 (> 2/7 tan 20) the static
     friction spring holds the contact point: acceleration 5/7 g sin 20."""
-    sphere = "constant/particleProperties", "particles/left"
     R = 0.002
-    case = dry_case(tmp_path, foam_env, "slope", {
+    case = lone_sphere(tmp_path, foam_env, "slope", f"(-0.008 0 {R*(1 - 1e-4)})", settings={
         ("constant/g", "value"): tilted_gravity(20),
         ("system/controlDict", "endTime"): 0.02,
         ("system/controlDict", "deltaT"): 5e-4,
         ("system/controlDict", "writeInterval"): 1000,
-        (sphere[0], f"{sphere[1]}/position"): f"(-0.008 0 {R*(1 - 1e-4)})",
-        (sphere[0], f"{sphere[1]}/velocity"): "(0 0 0)",
-    }, remove=["particles/right"])
+    })
     case.run("dlmDEMFoam")
     h = case.history()["left"]
     late = h[h[:, 0] > 0.01]
@@ -223,23 +221,20 @@ def test_grid_overlap_agrees_with_the_exact_one_as_the_mesh_is_refined(tmp_path,
 def test_restart_within_a_contact_continues_the_trajectory(tmp_path, foam_env):
     """Stop and restart while the sphere is pressed on the floor by a
     spinning start: the tangential spring is saved and read back."""
-    sphere = "constant/particleProperties", "particles/left"
     settings = {
         ("constant/g", "value"): "(0 0 -9.81)",
         ("system/controlDict", "endTime"): 0.01,
         ("system/controlDict", "deltaT"): 5e-4,
         ("system/controlDict", "writeInterval"): 10,
-        (sphere[0], f"{sphere[1]}/position"): "(-0.005 0 0.0019998)",
-        (sphere[0], f"{sphere[1]}/velocity"): "(0 0 0)",
-        (sphere[0], f"{sphere[1]}/angularVelocity"): "(0 50 0)",
+        ("constant/particleProperties", "particles/left/angularVelocity"): "(0 50 0)",
     }
-    full = dry_case(tmp_path, foam_env, "full", settings, ["particles/right"])
+    position = "(-0.005 0 0.0019998)"
+    full = lone_sphere(tmp_path, foam_env, "full", position, settings=settings)
     full.run("dlmDEMFoam")
     state = (full.path / "0.005" / "uniform" / "particles").read_text()
     assert "contacts" in state and "(0 -1 " in state
 
-    restarted = dry_case(tmp_path, foam_env, "restarted", settings,
-                         ["particles/right"])
+    restarted = lone_sphere(tmp_path, foam_env, "restarted", position, settings=settings)
     shutil.copytree(full.path / "0.005", restarted.path / "0.005")
     restarted.run("dlmDEMFoam")
     a = full.history()["left"]

@@ -749,17 +749,13 @@ void Foam::dlmParticleCloud::move()
                 {
                     continue;
                 }
-                const scalar mass = p.density()*p.shape().volume();
-                const tensor R(p.R());
-                const tensor inertia
-                (
-                    p.density()*(R & p.shape().inertiaPerUnitDensity() & R.T())
-                );
+                const scalar perDensity = deltaT/p.density();
                 p.setVelocities
                 (
-                    p.velocity() - deltaT/mass*p.contactForce(),
+                    p.velocity()
+                  - perDensity/p.shape().volume()*p.contactForce(),
                     p.angularVelocity()
-                  - deltaT*(inv(inertia) & p.contactTorque())
+                  - perDensity*p.spinPerUnitDensity(p.contactTorque())
                 );
                 p.setLoads
                 (

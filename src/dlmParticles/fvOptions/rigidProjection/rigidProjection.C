@@ -1075,18 +1075,13 @@ void Foam::fv::rigidProjection::addSup
         if (p.isFree())
         {
             // Reduced weight, and the mean contact force and torque of the
-            // last step (the contact sub-steps already moved the particle
-            // with them; this passes their impulse to the mixture)
+            // last step as the prediction of this step's (the particle's
+            // motion discounts it, see dlmParticleCloud::move)
             const vector density
             (
                 (p.density() - rhoFluid)*g + p.contactForce()/p.shape().volume()
             );
-            const tensor R(p.R());
-            const vector spin
-            (
-                inv(R & p.shape().inertiaPerUnitDensity() & R.T())
-              & p.contactTorque()
-            );
+            const vector spin(p.spinPerUnitDensity(p.contactTorque()));
             const vectorField& C = mesh_.C();
             const DynamicList<label>& cells = cloud.cells(i);
             const DynamicList<scalar>& fractions = cloud.fractions(i);
