@@ -99,8 +99,10 @@ def stored_rows(path):
 
 def merge_row(path, header, row, key_columns=2, sort_key=None):
     """Put row into a results CSV, replacing the row with the same first
-    key_columns values (the case and resolution), rows sorted."""
-    rows = [r for r in stored_rows(path) if r[:key_columns] != row[:key_columns]]
+    key_columns values (the case and resolution), rows sorted; older rows
+    without the header's last columns get nan there."""
+    rows = [r + [float("nan")]*(len(header) - len(r)) for r in stored_rows(path)
+            if r[:key_columns] != row[:key_columns]]
     rows.append(row)
     rows.sort(key=sort_key)
     write_table(path, header, rows)

@@ -16,14 +16,19 @@ constants (A = 164.97, B = 1.976, C = 0.9: Lambda = A + B Re^C), which
 could not be confirmed from a primary source: reported beside Ergun as the
 paper's statement only.
 
+At high Re (>= 100) the flow does not settle: the run lasts --flow-times
+convective times D/u (default 60) and Lambda is averaged from 20 D/u on;
+the relative difference between the means of the window's two halves
+(halvesDiff) says how well that mean is converged in time.
+
 For each run: Lambda, its difference from Ergun (and Franzen, and Zick &
-Homsy at Re 0.1), the drift of Lambda over the averaging window, wall time
-and steps; per Re the observed order of convergence and the Richardson
+Homsy at Re 0.1), the drift of Lambda over the averaging window (its range
+over its mean), halvesDiff, wall time and steps; per Re the observed order of convergence and the Richardson
 extrapolate of the three finest resolutions. Rows are merged into
 results/ergun.csv; results/ergun.png plots Lambda against resolution and
 the discretisation error (against the extrapolate) against wall time.
 
-    validation/validate_ergun.py [--re 0.1,18,900] [N ...]
+    validation/validate_ergun.py [--re 0.1,18,900] [--flow-times 60] [N ...]
         (default Re 0.1 18 900, N = 16 24 32)
 """
 
@@ -39,7 +44,8 @@ from common import (Case, RESULTS, ROOT, RUNS, ergun_lambda, foam_environment,
 
 TABLE = RESULTS / "ergun.csv"
 HEADER = ["Re", "cellsPerDiameter", "Lambda", "Lambda_Ergun", "relErrorErgun",
-          "Lambda_Franzen", "relErrorFranzen", "drift", "wallTime_s", "steps"]
+          "Lambda_Franzen", "relErrorFranzen", "drift", "wallTime_s", "steps",
+          "halvesDiff"]
 
 D, U = 0.004, 0.5
 EPS = 1 - math.pi/6
@@ -51,14 +57,20 @@ def franzen(re_number):
     return 164.97 + 1.976*re_number**0.9
 
 
-def end_time(re_number, nu):
+def end_time(re_number, nu, flow_times):
     """Steady at low Re after a few viscous times D^2/nu (the carried
-    constraint force converges with them); at high Re after tens of
-    convective times D/u."""
-    return 3*D**2/nu if re_number < 100 else 60*D/U
+    constraint force converges with them); at high Re, unsteady, averaged
+    over flow_times convective times D/u."""
+    return 3*D**2/nu if re_number < 100 else flow_times*D/U
 
 
-def make_case(re_number, n, env):
+def averaging_start(re_number, end):
+    """The last fifth of a steady run; an unsteady one after its start-up of
+    20 D/u."""
+    return 0.8*end if re_number < 100 else 20*D/U
+
+
+def make_case(re_number, n, flow_times, env):
     case = Case.copy(ROOT / "tutorials" / "periodicArray",
                      RUNS / f"ergun_{re_number:g}_{n}", env)
     nu = D*U/(re_number*(1 - EPS))
@@ -78,7 +90,7 @@ def make_case(re_number, n, env):
     edit("constant/transportProperties", "nu              1e-3;",
          f"nu              {nu:.8g};")
     controls = (path / "system" / "controlDict").read_text()
-    controls = re.sub(r"^endTime .*$", f"endTime         {end_time(re_number, nu):.6g};",
+    controls = re.sub(r"^endTime .*$", f"endTime         {end_time(re_number, nu, flow_times):.6g};",
                       controls, flags=re.M)
     controls = re.sub(r"^writeInterval .*$", "writeInterval   1e6;", controls,
                       flags=re.M)
@@ -104,20 +116,30 @@ rigidProjection
     return case
 
 
-def run(re_number, n, env):
-    case = make_case(re_number, n, env)
+def run(re_number, n, flow_times, env):
+    case = make_case(re_number, n, flow_times, env)
     seconds = timed_run(case, "./Allrun", math.pi/6, n)
     log = (case.path / "log.pimpleDLMFoam").read_text()
     steps = len(re.findall(r"^Time = ", log, re.M))
     rows = packed_bed_rows(case.path)
-    window = rows[rows[:, 0] >= 0.8*rows[-1, 0]]
+    window = rows[rows[:, 0] >= averaging_start(re_number, rows[-1, 0])]
     lam = window[:, 6]
-    return lam.mean(), (lam.max() - lam.min())/lam.mean(), seconds, steps
+    # Samples come at every (adjustable) step: weight them by time
+    t = window[:, 0]
+    weights = np.gradient(t)
+    mean = np.average(lam, weights=weights)
+    middle = 0.5*(t[0] + t[-1])
+    halves = [np.average(lam[side], weights=weights[side])
+              for side in (t < middle, t >= middle)]
+    return mean, (lam.max() - lam.min())/mean, seconds, steps, \
+        abs(halves[1] - halves[0])/mean
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--re", default="0.1,18,900")
+    parser.add_argument("--flow-times", type=float, default=60,
+                        help="run length at Re >= 100 in convective times D/u")
     parser.add_argument("resolutions", nargs="*", type=int, default=[16, 24, 32])
     args = parser.parse_args()
 
@@ -125,16 +147,17 @@ def main():
     RESULTS.mkdir(parents=True, exist_ok=True)
     for re_number in [float(r) for r in args.re.split(",")]:
         for n in args.resolutions:
-            lam, drift, seconds, steps = run(re_number, n, env)
+            lam, drift, seconds, steps, halves = run(re_number, n, args.flow_times, env)
             merge_row(TABLE, HEADER,
                       [re_number, n, lam, ergun_lambda(re_number),
                        lam/ergun_lambda(re_number) - 1, franzen(re_number),
-                       lam/franzen(re_number) - 1, drift, seconds, steps])
+                       lam/franzen(re_number) - 1, drift, seconds, steps, halves])
             extra = (f" Zick&Homsy {LAMBDA_STOKES:.1f} ({100*(lam/LAMBDA_STOKES - 1):+.2f}%)"
                      if re_number < 1 else "")
             print(f"Re={re_number:g} N={n:3d} Lambda={lam:.2f} Ergun={ergun_lambda(re_number):.1f} "
                   f"({100*(lam/ergun_lambda(re_number) - 1):+.1f}%) Franzen={franzen(re_number):.1f} "
                   f"({100*(lam/franzen(re_number) - 1):+.1f}%){extra} drift={100*drift:.2f}% "
+                  f"halves={100*halves:.2f}% "
                   f"wall={seconds:.0f}s steps={steps}", flush=True)
     summarise()
 
