@@ -100,12 +100,20 @@ def stored_rows(path):
 def merge_row(path, header, row, key_columns=2, sort_key=None):
     """Put row into a results CSV, replacing the row with the same first
     key_columns values (the case and resolution), rows sorted; older rows
-    without the header's last columns get nan there."""
-    rows = [r + [float("nan")]*(len(header) - len(r)) for r in stored_rows(path)
-            if r[:key_columns] != row[:key_columns]]
-    rows.append(row)
-    rows.sort(key=sort_key)
-    write_table(path, header, rows)
+    without the header's last columns get nan there. The results folder is
+    locked meanwhile, so that runs in parallel keep each other's rows."""
+    import fcntl
+    import os
+    folder = os.open(path.parent, os.O_RDONLY)
+    try:
+        fcntl.flock(folder, fcntl.LOCK_EX)
+        rows = [r + [float("nan")]*(len(header) - len(r)) for r in stored_rows(path)
+                if r[:key_columns] != row[:key_columns]]
+        rows.append(row)
+        rows.sort(key=sort_key)
+        write_table(path, header, rows)
+    finally:
+        os.close(folder)
 
 
 def three_point_order(n, f):

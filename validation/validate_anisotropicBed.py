@@ -26,13 +26,16 @@ and its wall time. Rows are merged into results/anisotropicBed.csv;
 results/anisotropicBed.png plots the pressure drops against resolution
 beside the Ergun estimates.
 
-    validation/validate_anisotropicBed.py [--end-time 80] [N ...]
-        (default N = 8 12 16)
+    validation/validate_anisotropicBed.py [--end-time 80] [--beds a,b] [N ...]
+        (default N = 8 12 16, all four beds; --beds runs some of them, so
+        that two calls can share the cores)
 """
 
 import argparse
 import math
+import os
 import re
+import shutil
 
 import numpy as np
 
@@ -72,13 +75,17 @@ def slab_volume(centres, axis, lower, upper):
 
 
 def pack(fraction, env):
-    """A periodic random packing at the solid fraction (seed 1): centres."""
-    case = Case.copy(ROOT / "tutorials" / "randomBed", RUNS / f"pack_{fraction:g}", env)
+    """A periodic random packing at the solid fraction (seed 1): centres.
+    Packed in a folder of this call's own, as calls may run together."""
+    case = Case.copy(ROOT / "tutorials" / "randomBed",
+                     RUNS / f"pack_{fraction:g}_{os.getpid()}", env)
     settings = case.path / "system" / "packSpheresDict"
     settings.write_text(re.sub(r"^solidFraction .*$", f"solidFraction   {fraction};",
                                settings.read_text(), flags=re.M))
     case.run("dlmPackSpheres")
-    return np.loadtxt(case.path / "constant" / "packing.dat", comments="#")[:, :3]
+    centres = np.loadtxt(case.path / "constant" / "packing.dat", comments="#")[:, :3]
+    shutil.rmtree(case.path)
+    return centres
 
 
 def deplete(centres, axis, count):
@@ -163,6 +170,8 @@ def run(name, centres, n, end_time, env):
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--end-time", type=float, default=80)
+    parser.add_argument("--beds", default=",".join(BEDS),
+                        help="comma-separated subset of " + ", ".join(BEDS))
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16])
     args = parser.parse_args()
 
@@ -173,8 +182,12 @@ def main():
         centres, estimate = packings[name]
         print(f"{name}: {len(centres)} spheres, Ergun estimate {estimate:.5f} m^2/s^2",
               flush=True)
+    chosen = args.beds.split(",")
+    unknown = sorted(set(chosen) - set(BEDS))
+    if unknown:
+        parser.error(f"unknown bed {', '.join(unknown)}: choose from {', '.join(BEDS)}")
     for n in args.resolutions:
-        for name in BEDS:
+        for name in (b for b in BEDS if b in chosen):
             centres, estimate = packings[name]
             eps, drop, drift, seconds, steps = run(name, centres, n, args.end_time, env)
             merge_row(TABLE, HEADER,
