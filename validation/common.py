@@ -119,7 +119,7 @@ def merge_row(path, header, row, key_columns=2, sort_key=None):
 def three_point_order(n, f):
     """Order p of f(h) = f0 + C h^p through three resolutions n (cells per
     diameter), by bisection on the ratio of the differences; nan if the
-    differences change sign."""
+    differences change sign or no order in [0.05, 8] fits them."""
     import numpy as np
     h = 1/np.asarray(n, float)
     d1, d2 = f[1] - f[0], f[2] - f[1]
@@ -131,6 +131,9 @@ def three_point_order(n, f):
         return (h[2]**p - h[1]**p)/(h[1]**p - h[0]**p)
 
     lo, hi = 0.05, 8.0
+    if (ratio(lo) - target)*(ratio(hi) - target) > 0:
+        # The differences do not shrink as any order in the bracket would
+        return float("nan")
     for _ in range(200):
         mid = 0.5*(lo + hi)
         if (ratio(mid) - target)*(ratio(lo) - target) > 0:

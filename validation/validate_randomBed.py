@@ -15,8 +15,8 @@ into results/randomBed.csv; results/randomBed.png plots Lambda against
 resolution and the error (against the extrapolate and against Ergun)
 against wall time.
 
-    validation/validate_randomBed.py [--re 900] [--end-time 80] [N ...]
-        (default N = 8 12 16 20)
+    validation/validate_randomBed.py [--re 900] [--end-time 80] [--np 1] [N ...]
+        (default N = 8 12 16 20; --np: ranks, decomposePar and mpirun)
 """
 
 import argparse
@@ -33,7 +33,7 @@ HEADER = ["Re", "cellsPerDiameter", "porosity", "Lambda", "Lambda_Ergun",
           "relErrorErgun", "drift", "wallTime_s", "steps"]
 
 
-def run(re_number, n, end_time, env):
+def run(re_number, n, end_time, ranks, env):
     case = Case.copy(ROOT / "tutorials" / "randomBed",
                      RUNS / f"randomBed_{re_number:g}_{n}", env)
     controls = case.path / "system" / "controlDict"
@@ -41,7 +41,7 @@ def run(re_number, n, end_time, env):
                   controls.read_text(), flags=re.M)
     controls.write_text(re.sub(r"^writeInterval .*$", f"writeInterval   {end_time:g};",
                                text, flags=re.M))
-    seconds = timed_run(case, "./Allrun", re_number, n)
+    seconds = timed_run(case, "./Allrun", re_number, n, ranks)
     log = (case.path / "log.pimpleDLMFoam").read_text()
     steps = len(re.findall(r"^Time = ", log, re.M))
     rows = packed_bed_rows(case.path)
@@ -56,13 +56,14 @@ def main():
     parser.add_argument("--re", type=float, default=900)
     parser.add_argument("--end-time", type=float, default=80,
                         help="flow time [s]; steady after about 30 s")
+    parser.add_argument("--np", type=int, default=1, help="MPI ranks")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16, 20])
     args = parser.parse_args()
 
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
     for n in args.resolutions:
-        eps, re_bed, lam, drift, seconds, steps = run(args.re, n, args.end_time, env)
+        eps, re_bed, lam, drift, seconds, steps = run(args.re, n, args.end_time, args.np, env)
         merge_row(TABLE, HEADER,
                   [args.re, n, eps, lam, ergun_lambda(re_bed),
                    lam/ergun_lambda(re_bed) - 1, drift, seconds, steps])
