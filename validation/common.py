@@ -1,5 +1,7 @@
 """Shared helpers of the validation scripts: running cases, timing, tables."""
 
+import fcntl
+import os
 import pathlib
 import sys
 import time
@@ -102,8 +104,6 @@ def merge_row(path, header, row, key_columns=2, sort_key=None):
     key_columns values (the case and resolution), rows sorted; older rows
     without the header's last columns get nan there. The results folder is
     locked meanwhile, so that runs in parallel keep each other's rows."""
-    import fcntl
-    import os
     folder = os.open(path.parent, os.O_RDONLY)
     try:
         fcntl.flock(folder, fcntl.LOCK_EX)

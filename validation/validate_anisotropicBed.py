@@ -174,6 +174,10 @@ def main():
                         help="comma-separated subset of " + ", ".join(BEDS))
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16])
     args = parser.parse_args()
+    chosen = args.beds.split(",")
+    unknown = sorted(set(chosen) - set(BEDS))
+    if unknown:
+        parser.error(f"unknown bed {', '.join(unknown)}: choose from {', '.join(BEDS)}")
 
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
@@ -182,10 +186,6 @@ def main():
         centres, estimate = packings[name]
         print(f"{name}: {len(centres)} spheres, Ergun estimate {estimate:.5f} m^2/s^2",
               flush=True)
-    chosen = args.beds.split(",")
-    unknown = sorted(set(chosen) - set(BEDS))
-    if unknown:
-        parser.error(f"unknown bed {', '.join(unknown)}: choose from {', '.join(BEDS)}")
     for n in args.resolutions:
         for name in (b for b in BEDS if b in chosen):
             centres, estimate = packings[name]

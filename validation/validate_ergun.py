@@ -23,8 +23,9 @@ the relative difference between the means of the window's two halves
 
 For each run: Lambda, its difference from Ergun (and Franzen, and Zick &
 Homsy at Re 0.1), the drift of Lambda over the averaging window (its range
-over its mean), halvesDiff, wall time and steps; per Re the observed order of convergence and the Richardson
-extrapolate of the three finest resolutions. Rows are merged into
+over its mean), halvesDiff, wall time and steps; per Re the observed order
+of convergence and the Richardson extrapolate of the three finest
+resolutions. Rows are merged into
 results/ergun.csv; results/ergun.png plots Lambda against resolution and
 the discretisation error (against the extrapolate) against wall time.
 
