@@ -206,22 +206,26 @@ def test_dense_random_bed_at_high_reynolds_number_is_steady_and_balances_momentu
     the flux keeps its full time correction). Interface cells of different spheres once sampled
     each other across gaps of three cells; the carried force amplified the
     loop by about 10 % a step, sign alternating, and the run died within 30
-    steps. Now the flow is steady: the mean pressure gradient holding the
-    superficial velocity equals the particles' drag to 1e-4 (momentum
-    balance; with the solid density in the fixed spheres' mixed cells the
-    convection term added 6 %), and does not depend on the density of
-    fixed spheres."""
+    steps. Now the mean pressure gradient holding the superficial velocity
+    equals the particles' drag to 1e-4 (momentum balance; with the solid
+    density in the fixed spheres' mixed cells the convection term added
+    6 %), and does not depend on the density of fixed spheres. With the
+    tutorial's convection scheme (LUST, blended with limitedLinearV 1 in
+    the gaps left to the flow) the flow is weakly unsteady: the drag swings
+    by about 2 % over some 30 s (it was steady to 0.3 % with limitedLinearV
+    1 everywhere)."""
     rows, gradient = random_bed(tmp_path, foam_env, "heavy", 2500, end_time=24)
     t, u, eps, g_drag = rows[-1][:4]
     assert t == pytest.approx(24, abs=0.2)
     assert u == pytest.approx(0.008, rel=1e-6)
     assert 0.38 < eps < 0.40
     assert g_drag == pytest.approx(gradient, rel=1e-4)
-    # Settling without oscillation: over the last quarter of the run the
-    # drag varies by less than 1 %, and by less than 1e-3 from step to step
+    # Bounded and smooth: over the last quarter of the run the drag varies
+    # by less than 5 %, and by less than 2e-3 from step to step (the loop
+    # that killed the run changed it by 10 % a step, alternating in sign)
     window = rows[rows[:, 0] >= 18, 3]
-    assert (window.max() - window.min())/window.mean() < 0.01
-    assert np.abs(np.diff(window)).max()/window.mean() < 1e-3
+    assert (window.max() - window.min())/window.mean() < 0.05
+    assert np.abs(np.diff(window)).max()/window.mean() < 2e-3
 
     rows_light, gradient_light = random_bed(tmp_path, foam_env, "light", 1000,
                                             end_time=24)

@@ -129,6 +129,14 @@ def test_force_relaxation_out_of_range(meshed, tmp_path):
     assert "fvOptions" in log
 
 
+def test_gap_blending_out_of_range(meshed, tmp_path):
+    def edit(case):
+        case.set("system/fvOptions", "rigidProjection/gapBlending", -0.5)
+    log = run_with(meshed, tmp_path, None, edit=edit)
+    assert "gapBlending -0.5" in log and "outside [0, 1]" in log
+    assert "fvOptions" in log
+
+
 def test_time_step_above_the_viscous_limit(meshed, tmp_path):
     # h = 1.67 mm in sphereBox: nu 1e-2 makes nu dt/h^2 = 18 at dt = 5 ms
     def edit(case):

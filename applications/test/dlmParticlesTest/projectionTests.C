@@ -221,6 +221,74 @@ void runFractionIntegral()
     CHECK(gSum(cloud.rho().primitiveField()*mesh.V()) == Approx(expectedMass));
 }
 
+
+// The cell whose centre is x
+label cellAt(const fvMesh& mesh, const point& x)
+{
+    const label celli = mesh.findCell(x);
+    REQUIRE(celli >= 0);
+    REQUIRE(mag(mesh.C()[celli] - x) < 1e-12);
+    return celli;
+}
+
+
+// The internal face between two cells
+label faceBetween(const fvMesh& mesh, const label celli, const label cellj)
+{
+    for (const label facei : mesh.cells()[celli])
+    {
+        if
+        (
+            mesh.isInternalFace(facei)
+         && (mesh.owner()[facei] == cellj || mesh.neighbour()[facei] == cellj)
+        )
+        {
+            return facei;
+        }
+    }
+    FAIL("cells " << celli << " and " << cellj << " share no face");
+    return -1;
+}
+
+
+void runGapBlending()
+{
+    const fvMesh& mesh = testCase::mesh();
+    dlmParticleCloud cloud(mesh, dimensionedScalar("rho", dimDensity, 1.0));
+    dictionary dict;
+    dict.add("type", "rigidProjection");
+    dict.add("gapBlending", 0.25);
+    fv::rigidProjection projection("projection", "rigidProjection", dict, mesh);
+    tmp<volVectorField> tU(zeroVelocity(mesh));
+    projection.correct(tU.ref());
+
+    const surfaceScalarField& factor =
+        mesh.lookupObject<surfaceScalarField>("UBlendingFactor");
+    auto factorBetween = [&](const point& a, const point& b)
+    {
+        return
+            factor[faceBetween(mesh, cellAt(mesh, a), cellAt(mesh, b))];
+    };
+
+    // Two cells between the surfaces at x = 0.3 and 0.43, and the cells
+    // next to the surfaces in a gap of three: left to the flow
+    const scalar y2 = 0.28125;
+    const scalar y3 = 0.71875;
+    const scalar z = 0.46875;
+    CHECK(factorBetween(point(0.34375, y2, z), point(0.40625, y2, z)) == 0.25);
+    CHECK(factorBetween(point(0.34375, y3, z), point(0.40625, y3, z)) == 0.25);
+    CHECK(factorBetween(point(0.40625, y3, z), point(0.46875, y3, z)) == 0.25);
+
+    // The three-cell gap's middle cell is next to no surface: its faces
+    // across the gap keep 1
+    CHECK(factorBetween(point(0.40625, y3, z), point(0.40625, y3 + 0.0625, z)) == 1);
+
+    // An interface cell with a profile (beyond the first sphere, towards
+    // the wall x = 0) and the open flow keep 1
+    CHECK(factorBetween(point(0.03125, y2, z), point(0.09375, y2, z)) == 1);
+    CHECK(factorBetween(point(0.84375, y2, z), point(0.90625, y2, z)) == 1);
+}
+
 } // End anonymous namespace
 
 
@@ -265,6 +333,18 @@ TEST_CASE("2D: a rigid velocity field is left unchanged", "[2D]")
 {
     REQUIRE(testCase::available());
     runRigidUnchanged();
+}
+
+
+
+TEST_CASE
+(
+    "3D: the faces of gaps left to the flow carry gapBlending",
+    "[gap]"
+)
+{
+    REQUIRE(testCase::available());
+    runGapBlending();
 }
 
 

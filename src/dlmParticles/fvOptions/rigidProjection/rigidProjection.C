@@ -252,6 +252,7 @@ void Foam::fv::rigidProjection::updateRegions()
         findRegion(i);
     }
     resolveSharedCells();
+    markGapFaces();
 
     restrictForce();
     heldForce_ = force_.primitiveField();
@@ -341,6 +342,56 @@ void Foam::fv::rigidProjection::markInsideCells()
         );
     }
     exchange(nextTo_, nextToAcross_, nextToSecondLayer_);
+}
+
+
+void Foam::fv::rigidProjection::markGapFaces()
+{
+    // Fluid cells next to a body that no profile forces: the narrow gaps
+    // left to the flow
+    labelList gap(mesh_.nCells(), 0);
+    forAll(gap, celli)
+    {
+        gap[celli] = insideOf_[celli] < 0 && nextTo_[celli] != -1;
+    }
+    for (const DynamicList<label>& cells : regionCells_)
+    {
+        for (const label celli : cells)
+        {
+            gap[celli] = 0;
+        }
+    }
+    labelList gapAcross(mesh_.nBoundaryFaces());
+    forAll(gapAcross, bFacei)
+    {
+        gapAcross[bFacei] =
+            gap[mesh_.faceOwner()[mesh_.nInternalFaces() + bFacei]];
+    }
+    syncTools::swapBoundaryFaceList(mesh_, gapAcross);
+
+    scalarField& internal = blendingFactor_.primitiveFieldRef();
+    forAll(internal, facei)
+    {
+        internal[facei] =
+            gap[mesh_.owner()[facei]] || gap[mesh_.neighbour()[facei]]
+          ? gapBlending_
+          : 1;
+    }
+    surfaceScalarField::Boundary& boundary =
+        blendingFactor_.boundaryFieldRef();
+    forAll(boundary, patchi)
+    {
+        const fvPatch& fp = mesh_.boundary()[patchi];
+        forAll(boundary[patchi], facei)
+        {
+            const label bFacei = fp.start() + facei - mesh_.nInternalFaces();
+            boundary[patchi][facei] =
+                gap[fp.faceCells()[facei]]
+             || (fp.coupled() && gapAcross[bFacei])
+              ? gapBlending_
+              : 1;
+        }
+    }
 }
 
 
@@ -919,6 +970,7 @@ Foam::fv::rigidProjection::rigidProjection
     mixedCells_(mixedCellsType::interpolated),
     forceRelaxation_(1),
     implicitHold_(10),
+    gapBlending_(0),
     force_
     (
         IOobject
@@ -942,6 +994,19 @@ Foam::fv::rigidProjection::rigidProjection
     nextTo_(mesh.nCells(), -1),
     nextToAcross_(mesh.nBoundaryFaces(), -1),
     nextToSecondLayer_(mesh.nBoundaryFaces(), -1),
+    blendingFactor_
+    (
+        IOobject
+        (
+            "UBlendingFactor",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1)
+    ),
     coupledDeltas_(mesh.boundary().size()),
     secondLayerCell_(mesh.nBoundaryFaces(), -1),
     secondLayerDelta_(mesh.nBoundaryFaces(), Zero),
@@ -1024,6 +1089,7 @@ bool Foam::fv::rigidProjection::read(const dictionary& dict)
         );
         forceRelaxation_ = coeffs_.getOrDefault<scalar>("forceRelaxation", 1);
         implicitHold_ = coeffs_.getOrDefault<scalar>("implicitHold", 10);
+        gapBlending_ = coeffs_.getOrDefault<scalar>("gapBlending", 0);
         if (forceRelaxation_ < 0 || forceRelaxation_ > 1)
         {
             FatalIOErrorInFunction(coeffs_)
@@ -1035,6 +1101,12 @@ bool Foam::fv::rigidProjection::read(const dictionary& dict)
             FatalIOErrorInFunction(coeffs_)
                 << "implicitHold " << implicitHold_ << " of fvOption "
                 << name_ << " is negative" << exit(FatalIOError);
+        }
+        if (gapBlending_ < 0 || gapBlending_ > 1)
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "gapBlending " << gapBlending_ << " of fvOption "
+                << name_ << " is outside [0, 1]" << exit(FatalIOError);
         }
         force_.writeOpt() =
             mixedCells_ == mixedCellsType::interpolated
@@ -1494,7 +1566,6 @@ void Foam::fv::rigidProjection::correctBlended(volVectorField& U)
     const vector g(gravity());
     const scalar rhoFluid = cloud.rhoFluid().value();
     const scalar deltaT = mesh_.time().deltaTValue();
-    const scalar ddtRate = this->ddtRate(U);
     const bool twoD = cloud.twoD();
 
     // Local sums, relative to each particle's own centre
