@@ -198,7 +198,7 @@ def random_bed(tmp_path, foam_env, name, density=2500, re_number=900, end_time=1
     return bed_rows(case), gradient
 
 
-def test_dense_random_bed_at_high_reynolds_number_is_steady_and_balances_momentum(
+def test_dense_random_bed_at_high_reynolds_number_is_bounded_and_balances_momentum(
         tmp_path, foam_env):
     """A random packing of 22 fixed spheres near contact (gaps down to 1e-7
     diameters) at Re 900 and 8 cells per diameter, driven to its

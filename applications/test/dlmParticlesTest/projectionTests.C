@@ -279,8 +279,8 @@ void runGapBlending()
     CHECK(factorBetween(point(0.34375, y3, z), point(0.40625, y3, z)) == 0.25);
     CHECK(factorBetween(point(0.40625, y3, z), point(0.46875, y3, z)) == 0.25);
 
-    // The three-cell gap's middle cell is next to no surface: its faces
-    // across the gap keep 1
+    // The three-cell gap's middle cell is next to no surface: its faces to
+    // the side keep 1
     CHECK(factorBetween(point(0.40625, y3, z), point(0.40625, y3 + 0.0625, z)) == 1);
 
     // An interface cell with a profile (beyond the first sphere, towards
@@ -334,7 +334,6 @@ TEST_CASE("2D: a rigid velocity field is left unchanged", "[2D]")
     REQUIRE(testCase::available());
     runRigidUnchanged();
 }
-
 
 
 TEST_CASE
