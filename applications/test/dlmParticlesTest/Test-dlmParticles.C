@@ -11,8 +11,9 @@ Description
 
     Usage: Test-dlmParticles <caseDir> [Catch2 options, e.g. "[3D]"]
 
-    Geometry tests need no case; tests tagged [3D] or [2D] use the mesh of
-    <caseDir> (a 3D box or a one-cell-thick 2D box with its own
+    Geometry tests need no case; tests tagged [3D], [2D] or [gap] use the
+    mesh of <caseDir> (a 3D box, a one-cell-thick 2D box, or the 3D box
+    with fixed spheres across narrow gaps, each with its own
     constant/particleProperties).
 
 \*---------------------------------------------------------------------------*/
