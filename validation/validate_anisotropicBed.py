@@ -40,7 +40,8 @@ import shutil
 import numpy as np
 
 from common import (Case, RESULTS, ROOT, RUNS, foam_environment, merge_row,
-                    packed_bed_rows, stored_rows, timed_run)
+                    packed_bed_rows, plot_speed_error, richardson, stored_rows,
+                    timed_run)
 
 TABLE = RESULTS / "anisotropicBed.csv"
 HEADER = ["bed", "cellsPerDiameter", "porosity", "pressureDrop_m2s2",
@@ -205,17 +206,25 @@ def summarise():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     rows = stored_rows(TABLE)
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    fig, axes = plt.subplots(1, 3, figsize=(16, 4))
+    series = {}
     for k, name in enumerate(BEDS):
         sel = sorted((r for r in rows if r[0] == name), key=lambda r: r[1])
         if not sel:
             continue
-        n = [r[1] for r in sel]
-        axes[0].plot(n, [r[3] for r in sel], "o-", color=f"C{k}", label=name)
+        n = np.array([r[1] for r in sel])
+        drop = np.array([r[3] for r in sel])
+        order, extrapolate = richardson(n, drop)
+        print(f"{name}: {', '.join(f'{v:.5f}' for v in drop)} at N = "
+              f"{', '.join(str(int(v)) for v in n)}; observed order {order:.2f}, "
+              f"extrapolate {extrapolate:.5f} (Ergun {sel[-1][4]:.5f}, "
+              f"{100*(extrapolate/sel[-1][4] - 1):+.1f}%)")
+        axes[0].plot(n, drop, "o-", color=f"C{k}", label=f"{name} (order {order:.2f})")
         axes[0].axhline(sel[-1][4], ls="--", lw=0.8, color=f"C{k}")
         axes[1].plot(n, [r[3]/next(q[3] for q in rows if q[0] == "uniform42"
                                      and q[1] == r[1]) for r in sel],
                      "o-", color=f"C{k}", label=name)
+        series[f"{name}, against Ergun"] = [(r[7], abs(r[5]), int(r[1])) for r in sel]
     axes[0].set_xlabel("cells per diameter")
     axes[0].set_ylabel("pressure drop / density [m^2/s^2]")
     axes[0].set_title("Anisotropic beds (dashed: Ergun estimates)")
@@ -224,6 +233,8 @@ def summarise():
     axes[1].set_ylabel("pressure drop / uniform 42 %")
     axes[1].set_title("Relative to the uniform 42 % bed")
     axes[1].legend(fontsize=7)
+    plot_speed_error(axes[2], series)
+    axes[2].set_title("Difference from Ergun against wall time")
     fig.tight_layout()
     fig.savefig(RESULTS / "anisotropicBed.png", dpi=120)
 
