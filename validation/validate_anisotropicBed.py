@@ -46,6 +46,10 @@ from common import (Case, RESULTS, ROOT, RUNS, foam_environment, merge_row,
 TABLE = RESULTS / "anisotropicBed.csv"
 HEADER = ["bed", "cellsPerDiameter", "porosity", "pressureDrop_m2s2",
           "ergun_m2s2", "relDiffErgun", "drift", "wallTime_s", "steps"]
+LAYERS = RESULTS / "anisotropicBed_layers.csv"
+LAYERS_HEADER = ["bed", "cellsPerDiameter", "layer", "porosity",
+                 "superficialVelocity", "pressureDrop_m2s2", "ergun_m2s2",
+                 "relDiffErgun"]
 
 RADIUS, D, U, L, RHO = 0.11283, 2*0.11283, 0.008, 1.0, 1000.0
 NU = D*U/(100*(1 - 0.42))
@@ -142,6 +146,56 @@ def beds(env):
     }
 
 
+def internal_field(path, components):
+    """The internal values of a binary volField (the tutorial writes
+    binary), as an array of shape (nCells, components)."""
+    raw = path.read_bytes()
+    header = re.search(rb"internalField\s+nonuniform\s+List<\w+>\s*(\d+)\s*\(", raw)
+    count = int(header.group(1))
+    return np.frombuffer(raw, dtype="<f8", count=components*count,
+                         offset=header.end()).reshape(count, components)
+
+
+def layer_rows(name, path, centres, end_time):
+    """Each layer's superficial velocity and pressure drop from the final
+    fields, against Ergun for that layer's porosity: in parallel the drop is
+    the bed's (the layers share it) and Ergun's is the one the layer's own
+    flow needs; in series the velocity is the bed's and the drop is the
+    layer's own (the driving body force over the layer plus the difference
+    of the mean fluid pressure at its ends)."""
+    axis = 1 if name == "parallel" else 0
+    time = path / f"{end_time:g}"
+    n = round(len(internal_field(time / "alpha.solid", 1)) ** (1/3))
+    # blockMesh numbers the cells x fastest: index [z, y, x]
+    fluid = 1 - internal_field(time / "alpha.solid", 1).reshape(n, n, n)
+    ux = internal_field(time / "U", 3)[:, 0].reshape(n, n, n)
+    p = internal_field(time / "p", 1).reshape(n, n, n)
+    across = tuple(a for a in (0, 1, 2) if a != 2 - axis)
+    centre = (np.arange(n) + 0.5)/n*L
+    in_band = (centre >= BAND[0]) & (centre < BAND[1])
+    gradient = packed_bed_rows(path)[-1, 3]/RHO
+    rows = []
+    for layer, lower, upper, cells in (("band", *BAND, in_band),
+                                       ("rest", 0.0, BAND[0], ~in_band)):
+        width = upper - lower
+        eps = 1 - slab_volume(centres, axis, lower, upper)/(width*L*L)
+        if axis == 1:
+            u = ux.mean(axis=across)[cells].mean()
+            drop, ergun = gradient*L, ergun_gradient(eps, u)*L
+        else:
+            u = U
+            mean_p = (p*fluid).sum(axis=across)/fluid.sum(axis=across)/RHO
+
+            def pressure(x):
+                periodic = np.r_[centre - L, centre, centre + L]
+                return np.interp(x, periodic, np.tile(mean_p, 3))
+
+            drop = gradient*width + pressure(lower) - pressure(upper)
+            ergun = ergun_gradient(eps, u)*width
+        rows.append([name, None, layer, eps, u, drop, ergun, drop/ergun - 1])
+    return rows
+
+
 def run(name, centres, n, end_time, env):
     case = Case.copy(ROOT / "tutorials" / "randomBed", RUNS / f"anisotropic_{name}_{n}", env)
     path = case.path
@@ -198,6 +252,15 @@ def main():
             print(f"{name:10s} N={n:3d} porosity={eps:.4f} dp/rho={drop:.5f} m^2/s^2 "
                   f"Ergun {estimate:.5f} ({100*(drop/estimate - 1):+.1f}%) "
                   f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
+            if name in ("parallel", "series"):
+                for row in layer_rows(name, RUNS / f"anisotropic_{name}_{n}", centres,
+                                      args.end_time):
+                    row[1] = n
+                    merge_row(LAYERS, LAYERS_HEADER, row, key_columns=3,
+                              sort_key=lambda r: (r[0], r[1], r[2]))
+                    print(f"  {row[2]:4s} porosity={row[3]:.4f} u={row[4]:.5f} m/s "
+                          f"dp/rho={row[5]:.5f} Ergun {row[6]:.5f} ({100*row[7]:+.1f}%)",
+                          flush=True)
     summarise()
 
 
