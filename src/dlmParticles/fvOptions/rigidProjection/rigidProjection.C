@@ -289,20 +289,17 @@ void Foam::fv::rigidProjection::markInsideCells()
         }
     }
 
-    const labelUList& faceCells = mesh_.faceOwner();
     auto exchange = [&](const labelList& cellValues, labelList& across,
                         labelList& secondLayer)
     {
-        forAll(across, bFacei)
+        syncTools::swapBoundaryCellList(mesh_, cellValues, across);
+        forAll(secondLayer, bFacei)
         {
-            const label facei = mesh_.nInternalFaces() + bFacei;
-            across[bFacei] = cellValues[faceCells[facei]];
             secondLayer[bFacei] =
                 secondLayerCell_[bFacei] >= 0
               ? cellValues[secondLayerCell_[bFacei]]
               : -1;
         }
-        syncTools::swapBoundaryFaceList(mesh_, across);
         syncTools::swapBoundaryFaceList(mesh_, secondLayer);
     };
     exchange(insideOf_, insideAcross_, insideSecondLayer_);
@@ -333,6 +330,7 @@ void Foam::fv::rigidProjection::markInsideCells()
             }
         }
     }
+    const labelUList& faceCells = mesh_.faceOwner();
     forAll(insideAcross_, bFacei)
     {
         addBody
@@ -361,13 +359,8 @@ void Foam::fv::rigidProjection::markGapFaces()
             gap[celli] = 0;
         }
     }
-    labelList gapAcross(mesh_.nBoundaryFaces());
-    forAll(gapAcross, bFacei)
-    {
-        gapAcross[bFacei] =
-            gap[mesh_.faceOwner()[mesh_.nInternalFaces() + bFacei]];
-    }
-    syncTools::swapBoundaryFaceList(mesh_, gapAcross);
+    labelList gapAcross;
+    syncTools::swapBoundaryCellList(mesh_, gap, gapAcross);
 
     scalarField& internal = blendingFactor_.primitiveFieldRef();
     forAll(internal, facei)
