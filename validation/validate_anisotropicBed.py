@@ -24,7 +24,10 @@ drop over the 1 m bed (the particles' drag per unit volume, averaged over
 the last quarter of the run) divided by the density, as the paper does,
 and its wall time. Rows are merged into results/anisotropicBed.csv;
 results/anisotropicBed.png plots the pressure drops against resolution
-beside the Ergun estimates.
+beside the Ergun estimates, their ratios to the uniform 42 % bed and the
+difference from Ergun against wall time. For the layered beds each layer's
+flow and pressure drop from the final fields, against Ergun at the layer's
+porosity, go to results/anisotropicBed_layers.csv.
 
     validation/validate_anisotropicBed.py [--end-time 80] [--beds a,b] [N ...]
         (default N = 8 12 16, all four beds; --beds runs some of them, so
@@ -166,7 +169,8 @@ def layer_rows(name, path, centres, end_time):
     axis = 1 if name == "parallel" else 0
     time = path / f"{end_time:g}"
     n = round(len(internal_field(time / "alpha.solid", 1)) ** (1/3))
-    # blockMesh numbers the cells x fastest: index [z, y, x]
+    # blockMesh numbers the cells x fastest: index [z, y, x], so the
+    # coordinate axis a is the array's axis 2 - a
     fluid = 1 - internal_field(time / "alpha.solid", 1).reshape(n, n, n)
     ux = internal_field(time / "U", 3)[:, 0].reshape(n, n, n)
     p = internal_field(time / "p", 1).reshape(n, n, n)
