@@ -73,9 +73,20 @@ class Case:
         return {name: np.array(values) for name, values in rows.items()}
 
     def internal_field(self, relative_path):
-        """Values of a scalar or vector field written in ascii (uniform or
-        nonuniform): shape (n,) or (n, 3)."""
-        text = (self.path / relative_path).read_text()
+        """Values of a scalar or vector field written in ascii or binary
+        (this build's binary: little-endian 64-bit scalars), uniform or
+        nonuniform: shape (n,) or (n, 3)."""
+        raw = (self.path / relative_path).read_bytes()
+        binary = None
+        if re.search(rb"^\s*format\s+binary;", raw, re.M):
+            binary = re.search(
+                rb"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(", raw)
+        if binary:
+            count = int(binary.group(2))
+            if binary.group(1) == b"scalar":
+                return np.frombuffer(raw, "<f8", count, binary.end())
+            return np.frombuffer(raw, "<f8", 3*count, binary.end()).reshape(count, 3)
+        text = raw.decode("latin-1")
         rest = text[text.index("internalField"):]
         rest = rest[:rest.index(";")]
         if rest.split()[1] == "uniform":

@@ -149,17 +149,7 @@ def beds(env):
     }
 
 
-def internal_field(path, components):
-    """The internal values of a binary volField (the tutorial writes
-    binary), as an array of shape (nCells, components)."""
-    raw = path.read_bytes()
-    header = re.search(rb"internalField\s+nonuniform\s+List<\w+>\s*(\d+)\s*\(", raw)
-    count = int(header.group(1))
-    return np.frombuffer(raw, dtype="<f8", count=components*count,
-                         offset=header.end()).reshape(count, components)
-
-
-def layer_rows(name, path, centres, end_time):
+def layer_rows(name, case, centres, end_time):
     """Each layer's superficial velocity and pressure drop from the final
     fields, against Ergun for that layer's porosity: in parallel the drop is
     the bed's (the layers share it) and Ergun's is the one the layer's own
@@ -167,17 +157,18 @@ def layer_rows(name, path, centres, end_time):
     layer's own (the driving body force over the layer plus the difference
     of the mean fluid pressure at its ends)."""
     axis = 1 if name == "parallel" else 0
-    time = path / f"{end_time:g}"
-    n = round(len(internal_field(time / "alpha.solid", 1)) ** (1/3))
+    time = f"{end_time:g}"
+    solid = case.internal_field(f"{time}/alpha.solid")
+    n = round(len(solid) ** (1/3))
     # blockMesh numbers the cells x fastest: index [z, y, x], so the
     # coordinate axis a is the array's axis 2 - a
-    fluid = 1 - internal_field(time / "alpha.solid", 1).reshape(n, n, n)
-    ux = internal_field(time / "U", 3)[:, 0].reshape(n, n, n)
-    p = internal_field(time / "p", 1).reshape(n, n, n)
+    fluid = 1 - solid.reshape(n, n, n)
+    ux = case.internal_field(f"{time}/U")[:, 0].reshape(n, n, n)
+    p = case.internal_field(f"{time}/p").reshape(n, n, n)
     across = tuple(a for a in (0, 1, 2) if a != 2 - axis)
     centre = (np.arange(n) + 0.5)/n*L
     in_band = (centre >= BAND[0]) & (centre < BAND[1])
-    gradient = packed_bed_rows(path)[-1, 3]/RHO
+    gradient = packed_bed_rows(case.path)[-1, 3]/RHO
     rows = []
     for layer, lower, upper, cells in (("band", *BAND, in_band),
                                        ("rest", 0.0, BAND[0], ~in_band)):
@@ -257,8 +248,8 @@ def main():
                   f"Ergun {estimate:.5f} ({100*(drop/estimate - 1):+.1f}%) "
                   f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
             if name in ("parallel", "series"):
-                for row in layer_rows(name, RUNS / f"anisotropic_{name}_{n}", centres,
-                                      args.end_time):
+                for row in layer_rows(name, Case(RUNS / f"anisotropic_{name}_{n}", env),
+                                      centres, args.end_time):
                     row[1] = n
                     merge_row(LAYERS, LAYERS_HEADER, row, key_columns=3,
                               sort_key=lambda r: (r[0], r[1], r[2]))
