@@ -19,6 +19,22 @@ def foam_environment():
     return dict(item.split("=", 1) for item in out.split("\0") if "=" in item)
 
 
+def packed_bed_rows(case_path, name="bed"):
+    """Rows of a packedBed function object's output: t u eps G_drag
+    G_patches Re Lambda Lambda_Ergun dragPerParticle F/Fs. A restarted run
+    writes a file per start time; a later start replaces the rows it
+    repeats."""
+    starts = sorted((pathlib.Path(case_path) / "postProcessing" / name).iterdir(),
+                    key=lambda d: float(d.name))
+    rows = []
+    for start in starts:
+        rows = [r for r in rows if r[0] <= float(start.name)]
+        rows += [[float(v) for v in line.split()]
+                 for line in (start / "packedBed.dat").read_text().splitlines()
+                 if line.strip() and not line.startswith("#")]
+    return np.array(rows)
+
+
 class Case:
     """An OpenFOAM case directory with the project's environment."""
 

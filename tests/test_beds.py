@@ -8,19 +8,10 @@ import shutil
 import numpy as np
 import pytest
 
-from foamcase import Case
+from foamcase import Case, packed_bed_rows
 
 HERE = pathlib.Path(__file__).resolve().parent
 ARRAY = HERE.parent / "tutorials" / "periodicArray"
-
-
-def bed_rows(case, name="bed"):
-    """Rows of the packedBed output: t u eps G_drag G_patches Re Lambda
-    Lambda_Ergun dragPerParticle F/Fs."""
-    text = (case.path / "postProcessing" / name / "0" / "packedBed.dat").read_text()
-    return np.array([[float(v) for v in line.split()]
-                     for line in text.splitlines()
-                     if line.strip() and not line.startswith("#")])
 
 
 def array_case(tmp_path, foam_env, name, shift_cells=0):
@@ -51,7 +42,7 @@ def test_sphere_across_periodic_boundaries_sees_the_flow_of_the_centred_one(
     assert "Periodic images: 7" in (shifted.path / "log.pimpleDLMFoam").read_text()
     assert "Periodic images" not in (centred.path / "log.pimpleDLMFoam").read_text()
 
-    a, b = bed_rows(centred)[-1], bed_rows(shifted)[-1]
+    a, b = packed_bed_rows(centred.path)[-1], packed_bed_rows(shifted.path)[-1]
     assert b[2] == pytest.approx(0.875, abs=1e-8)       # porosity, exact fractions
     assert b[1] == pytest.approx(a[1], rel=1e-6)        # superficial velocity
     assert b[3] == pytest.approx(1.0, rel=1e-4)         # drag holds G = 1 Pa/m
@@ -68,7 +59,7 @@ def test_sphere_across_periodic_boundaries_sees_the_flow_of_the_centred_one(
     parallel.run("blockMesh")
     parallel.run("decomposePar")
     parallel.run("pimpleDLMFoam", np=2)
-    c = bed_rows(parallel)[-1]
+    c = packed_bed_rows(parallel.path)[-1]
     assert c[1] == pytest.approx(b[1], rel=1e-6)
     assert c[-1] == pytest.approx(b[-1], rel=1e-6)
 
@@ -94,7 +85,7 @@ def test_flow_driven_to_a_superficial_velocity_needs_the_same_gradient(
     within 0.1 %, with the superficial velocity held to 1e-4."""
     driven = array_case(tmp_path, foam_env, "gradient")
     driven.run("./Allrun", 0.125, 8)
-    u = float(bed_rows(driven)[-1, 1])
+    u = float(packed_bed_rows(driven.path)[-1, 1])
 
     case = array_case(tmp_path, foam_env, "velocity")
     (case.path / "system" / "fvOptions").write_text(f"""FoamFile
@@ -114,7 +105,7 @@ rigidProjection
 }}
 """)
     case.run("./Allrun", 0.125, 8)
-    rows = bed_rows(case)
+    rows = packed_bed_rows(case.path)
     assert rows[-1, 1] == pytest.approx(u, rel=1e-4)
     assert rows[-1, 3] == pytest.approx(1.0, rel=1e-3)
     log = (case.path / "log.pimpleDLMFoam").read_text()
@@ -136,7 +127,7 @@ def test_fixed_sphere_density_does_not_enter_the_flow(tmp_path, foam_env, mixed_
         properties.write_text(properties.read_text().replace(
             "density     1000;", f"density     {density};"))
         case.run("./Allrun", 0.125, 8)
-        results.append(bed_rows(case)[-1])
+        results.append(packed_bed_rows(case.path)[-1])
     light, heavy = results
     assert heavy[1] == pytest.approx(light[1], rel=1e-9)   # superficial velocity
     assert heavy[3] == pytest.approx(light[3], rel=1e-9)   # drag per unit volume
@@ -159,19 +150,19 @@ def test_touching_spheres_in_a_cubic_bed_run_stably_and_balance_momentum(
     case = Case.copy(HERE.parent / "tutorials" / "cubicBed", tmp_path / "bed",
                      foam_env)
     case.run("./Allrun", 18, 8)
-    t, u, eps, g_drag, g_patches, Re = bed_rows(case)[-1][:6]
+    t, u, eps, g_drag, g_patches, Re = packed_bed_rows(case.path)[-1][:6]
     assert t == pytest.approx(0.05, abs=1e-3)
     assert eps == pytest.approx(1 - math.pi/6, abs=1e-8)
     assert u == pytest.approx(0.5, rel=0.02)
     assert g_patches == pytest.approx(g_drag, rel=0.01)
     assert Re == pytest.approx(18, rel=0.02)
     # The middle spheres carry the same drag as fully developed flow
-    interior = bed_rows(case, "interior")[-1]
+    interior = packed_bed_rows(case.path, "interior")[-1]
     assert interior[3] == pytest.approx(g_drag, rel=0.05)
 
 
 def random_bed(tmp_path, foam_env, name, density=2500, re_number=900, end_time=12,
-               max_courant=0.5, ascii=False, implicit_hold=None):
+               max_courant=0.5, ascii=False, implicit_hold=None, write_interval=None):
     """tutorials/randomBed in a periodic cube of side 0.6 m (22 spheres at
     solid fraction 0.61, 21^3 cells), for end_time seconds (12 s: about 80
     steps), with the given density of its fixed spheres: the packedBed rows
@@ -187,6 +178,8 @@ def random_bed(tmp_path, foam_env, name, density=2500, re_number=900, end_time=1
         case.set("system/controlDict", "writeInterval", end_time)
     if implicit_hold is not None:
         case.set("system/fvOptions", "rigidProjection/implicitHold", implicit_hold)
+    if write_interval is not None:
+        case.set("system/controlDict", "writeInterval", write_interval)
     properties = case.path / "constant" / "particleProperties"
     properties.write_text(properties.read_text().replace(
         "density     2500;", f"density     {density};"))
@@ -194,8 +187,8 @@ def random_bed(tmp_path, foam_env, name, density=2500, re_number=900, end_time=1
     log = (case.path / "log.pimpleDLMFoam").read_text()
     gradient = float(log.split("pressure gradient = ")[-1].split()[0])
     if ascii:
-        return bed_rows(case), gradient, case
-    return bed_rows(case), gradient
+        return packed_bed_rows(case.path), gradient, case
+    return packed_bed_rows(case.path), gradient
 
 
 def test_dense_random_bed_at_high_reynolds_number_is_bounded_and_balances_momentum(
@@ -231,6 +224,31 @@ def test_dense_random_bed_at_high_reynolds_number_is_bounded_and_balances_moment
                                             end_time=24)
     assert gradient_light == pytest.approx(gradient, rel=1e-9)
     assert rows_light[-1][3] == pytest.approx(g_drag, rel=1e-9)
+
+
+def test_restarted_random_bed_continues_as_if_never_stopped(tmp_path, foam_env):
+    """The 22-sphere random bed at Re 900, written at 6 s, stopped at 9 s
+    and restarted from 6 s (its fixed spheres' carried force, the driving
+    gradient and the adaptive step read back), repeats the uninterrupted
+    run's drag step by step to 12 s, to 1e-9; the packedBed output of the
+    two segments reads as one series, the restart's rows replacing those it
+    repeats."""
+    full, _ = random_bed(tmp_path, foam_env, "full", end_time=12, write_interval=6)
+    restarted = Case(tmp_path / "restarted", foam_env)
+    shutil.copytree(tmp_path / "full", restarted.path)
+    shutil.rmtree(restarted.path / "12")
+    first = restarted.path / "postProcessing" / "bed" / "0" / "packedBed.dat"
+    first.write_text("".join(line for line in first.read_text().splitlines(True)
+                             if line.startswith("#") or float(line.split()[0]) <= 9))
+    restarted.run("pimpleDLMFoam")
+
+    segment = np.loadtxt(restarted.path / "postProcessing" / "bed" / "6" / "packedBed.dat")
+    repeated = full[full[:, 0] > 6 + 1e-9]
+    np.testing.assert_allclose(segment[:, 0], repeated[:, 0], rtol=1e-12)
+    np.testing.assert_allclose(segment[:, 3], repeated[:, 3], rtol=1e-9)
+    rows = packed_bed_rows(restarted.path)
+    assert rows.shape == full.shape
+    np.testing.assert_allclose(rows, full, rtol=1e-9)
 
 
 def face_cells(case):

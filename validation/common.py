@@ -12,7 +12,7 @@ RUNS = ROOT / "validation" / "runs"
 RESULTS = ROOT / "validation" / "results"
 
 sys.path.insert(0, str(ROOT / "tests"))
-from foamcase import Case, foam_environment  # noqa: E402,F401
+from foamcase import Case, foam_environment, packed_bed_rows  # noqa: E402,F401
 
 
 def read_csv(name):
@@ -67,16 +67,6 @@ def plot_speed_error(ax, series, target=None):
     ax.set_xlabel("wall time [s]")
     ax.set_ylabel("|error| [%]")
     ax.legend()
-
-
-def packed_bed_rows(case_path, name="bed"):
-    """Rows of a packedBed function object's output: t u eps G_drag
-    G_patches Re Lambda Lambda_Ergun dragPerParticle F/Fs."""
-    import numpy as np
-    text = (case_path / "postProcessing" / name / "0" / "packedBed.dat").read_text()
-    return np.array([[float(v) for v in line.split()]
-                     for line in text.splitlines()
-                     if line.strip() and not line.startswith("#")])
 
 
 def ergun_lambda(re_number):
