@@ -15,8 +15,11 @@ into results/randomBed.csv; results/randomBed.png plots Lambda against
 resolution and the error (against the extrapolate and against Ergun)
 against wall time.
 
-    validation/validate_randomBed.py [--re 900] [--end-time 80] [--np 1] [N ...]
-        (default N = 8 12 16 20; --np: ranks, decomposePar and mpirun)
+    validation/validate_randomBed.py [--re 900] [--end-time 80] [--np 1]
+                                     [--write-interval T] [--continue] [N ...]
+        (default N = 8 12 16 20; --np: ranks, decomposePar and mpirun;
+        --continue: run the existing runs on from their latest written time,
+        as after a stop, to the end time)
 """
 
 import argparse
@@ -33,22 +36,49 @@ HEADER = ["Re", "cellsPerDiameter", "porosity", "Lambda", "Lambda_Ergun",
           "relErrorErgun", "drift", "wallTime_s", "steps"]
 
 
-def run(re_number, n, end_time, ranks, env):
-    case = Case.copy(ROOT / "tutorials" / "randomBed",
-                     RUNS / f"randomBed_{re_number:g}_{n}", env)
+def set_controls(case, end_time, write_interval):
     controls = case.path / "system" / "controlDict"
     text = re.sub(r"^endTime .*$", f"endTime         {end_time:g};",
                   controls.read_text(), flags=re.M)
-    controls.write_text(re.sub(r"^writeInterval .*$", f"writeInterval   {end_time:g};",
+    controls.write_text(re.sub(r"^writeInterval .*$",
+                               f"writeInterval   {write_interval or end_time:g};",
                                text, flags=re.M))
+
+
+def run(re_number, n, end_time, ranks, write_interval, env):
+    case = Case.copy(ROOT / "tutorials" / "randomBed",
+                     RUNS / f"randomBed_{re_number:g}_{n}", env)
+    set_controls(case, end_time, write_interval)
     seconds = timed_run(case, "./Allrun", re_number, n, ranks)
-    log = (case.path / "log.pimpleDLMFoam").read_text()
-    steps = len(re.findall(r"^Time = ", log, re.M))
-    rows = packed_bed_rows(case.path)
+    return reduce(case.path) + (seconds,)
+
+
+def extend(re_number, n, end_time, write_interval, env):
+    """Continue an earlier run from its latest written time to end_time, on
+    the ranks it was decomposed for; the wall time is the sum of the solver
+    logs' clock times (log.pimpleDLMFoam, then log.pimpleDLMFoam.<start>)."""
+    case = Case(RUNS / f"randomBed_{re_number:g}_{n}", env)
+    ranks = len(list(case.path.glob("processor[0-9]*")))
+    written = Case(case.path / "processor0", env) if ranks else case
+    latest = written.times()[-1]
+    if float(latest) <= 0:
+        raise SystemExit(f"{case.path}: no written time after 0 to continue from")
+    if float(latest) < end_time:
+        set_controls(case, end_time, write_interval)
+        case.run("pimpleDLMFoam", np=max(ranks, 1), log=f"pimpleDLMFoam.{latest}")
+    seconds = sum(float(re.findall(r"ClockTime = (\S+)", log.read_text())[-1])
+                  for log in case.path.glob("log.pimpleDLMFoam*"))
+    return reduce(case.path) + (seconds,)
+
+
+def reduce(path):
+    """Porosity, Re, Lambda averaged over the last quarter of the run, its
+    drift over that window, and the steps."""
+    rows = packed_bed_rows(path)
     window = rows[rows[:, 0] >= 0.75*rows[-1, 0]]
     lam = window[:, 6]
     return rows[-1, 2], rows[-1, 5], lam.mean(), (lam.max() - lam.min())/lam.mean(), \
-        seconds, steps
+        len(rows)
 
 
 def main():
@@ -57,13 +87,22 @@ def main():
     parser.add_argument("--end-time", type=float, default=80,
                         help="flow time [s]; steady after about 30 s")
     parser.add_argument("--np", type=int, default=1, help="MPI ranks")
+    parser.add_argument("--write-interval", type=float,
+                        help="flow time between written fields (default: the end time)")
+    parser.add_argument("--continue", dest="extend", action="store_true",
+                        help="continue the existing runs to the end time")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16, 20])
     args = parser.parse_args()
 
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
     for n in args.resolutions:
-        eps, re_bed, lam, drift, seconds, steps = run(args.re, n, args.end_time, args.np, env)
+        if args.extend:
+            eps, re_bed, lam, drift, steps, seconds = \
+                extend(args.re, n, args.end_time, args.write_interval, env)
+        else:
+            eps, re_bed, lam, drift, steps, seconds = \
+                run(args.re, n, args.end_time, args.np, args.write_interval, env)
         merge_row(TABLE, HEADER,
                   [args.re, n, eps, lam, ergun_lambda(re_bed),
                    lam/ergun_lambda(re_bed) - 1, drift, seconds, steps])
