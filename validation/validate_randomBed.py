@@ -15,11 +15,12 @@ into results/randomBed.csv; results/randomBed.png plots Lambda against
 resolution and the error (against the extrapolate and against Ergun)
 against wall time.
 
-    validation/validate_randomBed.py [--re 900] [--end-time 80] [--np 1]
+    validation/validate_randomBed.py [--re 900] [--end-time 80] [--np 1] [--box 1]
                                      [--write-interval T] [--continue] [N ...]
         (default N = 8 12 16 20; --np: ranks, decomposePar and mpirun;
         --continue: run the existing runs on from their latest written time,
-        as after a stop, to the end time)
+        as after a stop, to the end time; --box 0.6: the tests' 22-sphere
+        bed, results/randomBed_box0.6.csv)
 """
 
 import argparse
@@ -31,7 +32,6 @@ from common import (Case, RESULTS, ROOT, RUNS, ergun_lambda, foam_environment,
                     merge_row, packed_bed_rows, plot_speed_error, richardson,
                     stored_rows, timed_run)
 
-TABLE = RESULTS / "randomBed.csv"
 HEADER = ["Re", "cellsPerDiameter", "porosity", "Lambda", "Lambda_Ergun",
           "relErrorErgun", "drift", "wallTime_s", "steps"]
 
@@ -45,19 +45,28 @@ def set_controls(case, end_time, write_interval):
                                text, flags=re.M))
 
 
-def run(re_number, n, end_time, ranks, write_interval, env):
+def name(box):
+    """Runs and results of the paper's 1 m box as randomBed, others as
+    randomBed_box<side>."""
+    return "randomBed" if box == 1 else f"randomBed_box{box:g}"
+
+
+def run(re_number, n, end_time, ranks, write_interval, box, env):
     case = Case.copy(ROOT / "tutorials" / "randomBed",
-                     RUNS / f"randomBed_{re_number:g}_{n}", env)
+                     RUNS / f"{name(box)}_{re_number:g}_{n}", env)
     set_controls(case, end_time, write_interval)
+    if box != 1:
+        mesh = case.path / "system" / "blockMeshDict"
+        mesh.write_text(re.sub(r"^L .*$", f"L   {box:g};", mesh.read_text(), flags=re.M))
     seconds = timed_run(case, "./Allrun", re_number, n, ranks)
     return reduce(case.path) + (seconds,)
 
 
-def extend(re_number, n, end_time, write_interval, env):
+def extend(re_number, n, end_time, write_interval, box, env):
     """Continue an earlier run from its latest written time to end_time, on
     the ranks it was decomposed for; the wall time is the sum of the solver
     logs' clock times (log.pimpleDLMFoam, then log.pimpleDLMFoam.<start>)."""
-    case = Case(RUNS / f"randomBed_{re_number:g}_{n}", env)
+    case = Case(RUNS / f"{name(box)}_{re_number:g}_{n}", env)
     ranks = len(list(case.path.glob("processor[0-9]*")))
     written = Case(case.path / "processor0", env) if ranks else case
     latest = written.times()[-1]
@@ -91,6 +100,9 @@ def main():
                         help="flow time between written fields (default: the end time)")
     parser.add_argument("--continue", dest="extend", action="store_true",
                         help="continue the existing runs to the end time")
+    parser.add_argument("--box", type=float, default=1,
+                        help="side of the periodic cube [m] (1: the paper's 100 spheres;"
+                        " 0.6: 22 spheres, the tests' bed)")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16, 20])
     args = parser.parse_args()
 
@@ -99,24 +111,24 @@ def main():
     for n in args.resolutions:
         if args.extend:
             eps, re_bed, lam, drift, steps, seconds = \
-                extend(args.re, n, args.end_time, args.write_interval, env)
+                extend(args.re, n, args.end_time, args.write_interval, args.box, env)
         else:
             eps, re_bed, lam, drift, steps, seconds = \
-                run(args.re, n, args.end_time, args.np, args.write_interval, env)
-        merge_row(TABLE, HEADER,
+                run(args.re, n, args.end_time, args.np, args.write_interval, args.box, env)
+        merge_row(RESULTS / f"{name(args.box)}.csv", HEADER,
                   [args.re, n, eps, lam, ergun_lambda(re_bed),
                    lam/ergun_lambda(re_bed) - 1, drift, seconds, steps])
         print(f"Re={args.re:g} N={n:3d} porosity={eps:.4f} Lambda={lam:.1f} "
               f"Ergun={ergun_lambda(re_bed):.1f} ({100*(lam/ergun_lambda(re_bed) - 1):+.1f}%) "
               f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
-    summarise()
+    summarise(name(args.box))
 
 
-def summarise():
+def summarise(table):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = stored_rows(TABLE)
+    rows = stored_rows(RESULTS / f"{table}.csv")
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
     series = {}
     for re_number in sorted({r[0] for r in rows}):
@@ -140,12 +152,12 @@ def summarise():
             [(r[7], abs(r[5]), int(r[1])) for r in sel]
     axes[0].set_xlabel("cells per diameter")
     axes[0].set_ylabel("Lambda")
-    axes[0].set_title("Random bed, porosity 40 %")
+    axes[0].set_title(f"Random bed, {table}.csv")
     axes[0].legend(fontsize=7)
     plot_speed_error(axes[1], series, target=5)
     axes[1].set_title("Error against wall time")
     fig.tight_layout()
-    fig.savefig(RESULTS / "randomBed.png", dpi=120)
+    fig.savefig(RESULTS / f"{table}.png", dpi=120)
 
 
 if __name__ == "__main__":
