@@ -67,6 +67,8 @@ def extend(re_number, n, end_time, write_interval, box, env):
     the ranks it was decomposed for; the wall time is the sum of the solver
     logs' clock times (log.pimpleDLMFoam, then log.pimpleDLMFoam.<start>)."""
     case = Case(RUNS / f"{name(box)}_{re_number:g}_{n}", env)
+    if not (case.path / "log.pimpleDLMFoam").exists():
+        raise SystemExit(f"{case.path}: no run to continue (run it without --continue)")
     ranks = len(list(case.path.glob("processor[0-9]*")))
     written = Case(case.path / "processor0", env) if ranks else case
     latest = written.times()[-1]
