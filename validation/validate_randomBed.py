@@ -8,7 +8,8 @@ here is 5 %.
 
 For each resolution (cells per diameter): Lambda = G eps^3 D^2/((1 - eps)^2
 mu u) (its eq. 25), G the particles' drag per unit volume (packedBed)
-averaged over the last quarter of the run, its difference from Ergun, the
+averaged over the last quarter of the run (from its start, which a
+mapped run takes from the coarser run), its difference from Ergun, the
 drift over that window, wall time and steps; then the observed order and
 the Richardson extrapolate of the three finest resolutions. Rows are merged
 into results/randomBed.csv; results/randomBed.png plots Lambda against
@@ -16,15 +17,20 @@ resolution and the error (against the extrapolate and against Ergun)
 against wall time.
 
     validation/validate_randomBed.py [--re 900] [--end-time 80] [--np 1] [--box 1]
-                                     [--write-interval T] [--continue] [N ...]
+                                     [--write-interval T] [--continue]
+                                     [--map-from M] [N ...]
         (default N = 8 12 16 20; --np: ranks, decomposePar and mpirun;
         --continue: run the existing runs on from their latest written time,
-        as after a stop, to the end time; --box 0.6: the tests' 22-sphere
-        bed, results/randomBed_box0.6.csv)
+        as after a stop, to the end time; --map-from M: start from the run
+        at M cells per diameter, its latest written fields mapped onto the
+        finer mesh, and run from that time to the end time; --box 0.6: the
+        tests' 22-sphere bed, results/randomBed_box0.6.csv)
 """
 
 import argparse
+import pathlib
 import re
+import shutil
 
 import numpy as np
 
@@ -51,15 +57,57 @@ def name(box):
     return "randomBed" if box == 1 else f"randomBed_box{box:g}"
 
 
-def run(re_number, n, end_time, ranks, write_interval, box, env):
+def new_case(re_number, n, end_time, write_interval, box, env):
     case = Case.copy(ROOT / "tutorials" / "randomBed",
                      RUNS / f"{name(box)}_{re_number:g}_{n}", env)
     set_controls(case, end_time, write_interval)
     if box != 1:
         mesh = case.path / "system" / "blockMeshDict"
         mesh.write_text(re.sub(r"^L .*$", f"L   {box:g};", mesh.read_text(), flags=re.M))
+    return case
+
+
+def run(re_number, n, end_time, ranks, write_interval, box, env):
+    case = new_case(re_number, n, end_time, write_interval, box, env)
     seconds = timed_run(case, "./Allrun", re_number, n, ranks)
     return reduce(case.path) + (seconds,)
+
+
+def mapped_run(re_number, n, coarse, end_time, ranks, write_interval, box, env):
+    """Start at N = n from the latest written time of the run at N = coarse:
+    its velocity, pressure and carried force mapped onto the finer mesh
+    (mapFields -consistent) and its driving pressure gradient, then run to
+    end_time. The flow then needs only to adapt to the finer mesh, where a
+    start from rest must first develop. Lambda is averaged over the last
+    quarter of this run; the wall time adds the coarse run's."""
+    source = Case(RUNS / f"{name(box)}_{re_number:g}_{coarse}", env)
+    if not (source.path / "log.pimpleDLMFoam").exists():
+        raise SystemExit(f"{source.path}: no run to map from (run N = {coarse} first)")
+    source_ranks = len(list(source.path.glob("processor[0-9]*")))
+    written = Case(source.path / "processor0", env) if source_ranks else source
+    start = written.times()[-1]
+    if float(start) >= end_time:
+        raise SystemExit(f"{source.path}: latest time {start} is not before the end "
+                         f"time {end_time:g}")
+    case = new_case(re_number, n, end_time, write_interval, box, env)
+    case.run("./Allrun.pre", re_number, n, log="Allrun.pre")
+    (case.path / "0").rename(case.path / start)
+    # mapFields maps only into fields the target has
+    velocity = (case.path / start / "U").read_text()
+    (case.path / start / "rigidForce").write_text(
+        velocity.replace("object      U;", "object      rigidForce;")
+        .replace("[0 1 -1 0 0 0 0]", "[1 -2 -2 0 0 0 0]")
+        .replace("uniform (0.008 0 0)", "uniform (0 0 0)"))
+    case.run("mapFields", source.path, "-consistent", "-sourceTime", start,
+             *(["-parallelSource"] if source_ranks else []))
+    (case.path / start / "uniform").mkdir()
+    shutil.copy(written.path / start / "uniform" / "superficialVelocityProperties",
+                case.path / start / "uniform")
+    if ranks > 1:
+        case.set("system/decomposeParDict", "numberOfSubdomains", ranks)
+        case.run("decomposePar", "-force")
+    case.run("pimpleDLMFoam", np=ranks)
+    return reduce(case.path) + (solver_seconds(case.path),)
 
 
 def extend(re_number, n, end_time, write_interval, box, env):
@@ -77,16 +125,27 @@ def extend(re_number, n, end_time, write_interval, box, env):
     if float(latest) < end_time:
         set_controls(case, end_time, write_interval)
         case.run("pimpleDLMFoam", np=max(ranks, 1), log=f"pimpleDLMFoam.{latest}")
+    return reduce(case.path) + (solver_seconds(case.path),)
+
+
+def solver_seconds(path):
+    """Sum of the solver logs' clock times: the wall time of a run continued
+    over several starts, and of a mapped run's source (log.mapFields)."""
     seconds = sum(float(re.findall(r"ClockTime = (\S+)", log.read_text())[-1])
-                  for log in case.path.glob("log.pimpleDLMFoam*"))
-    return reduce(case.path) + (seconds,)
+                  for log in path.glob("log.pimpleDLMFoam*"))
+    mapped = path / "log.mapFields"
+    if mapped.exists():
+        source = re.search(r'^Source: "(.*)" "(.*)"$', mapped.read_text(), flags=re.M)
+        seconds += solver_seconds(pathlib.Path(*source.groups()))
+    return seconds
 
 
 def reduce(path):
     """Porosity, Re, Lambda averaged over the last quarter of the run, its
     drift over that window, and the steps."""
     rows = packed_bed_rows(path)
-    window = rows[rows[:, 0] >= 0.75*rows[-1, 0]]
+    start = float(min(path.glob("postProcessing/bed/*"), key=lambda d: float(d.name)).name)
+    window = rows[rows[:, 0] >= start + 0.75*(rows[-1, 0] - start)]
     lam = window[:, 6]
     return rows[-1, 2], rows[-1, 5], lam.mean(), (lam.max() - lam.min())/lam.mean(), \
         len(rows)
@@ -102,6 +161,9 @@ def main():
                         help="flow time between written fields (default: the end time)")
     parser.add_argument("--continue", dest="extend", action="store_true",
                         help="continue the existing runs to the end time")
+    parser.add_argument("--map-from", type=int, metavar="N",
+                        help="start from the latest written fields of the run at N"
+                        " cells per diameter, mapped onto the finer mesh")
     parser.add_argument("--box", type=float, default=1,
                         help="side of the periodic cube [m] (1: the paper's 100 spheres;"
                         " 0.6: 22 spheres, the tests' bed)")
@@ -114,6 +176,10 @@ def main():
         if args.extend:
             eps, re_bed, lam, drift, steps, seconds = \
                 extend(args.re, n, args.end_time, args.write_interval, args.box, env)
+        elif args.map_from:
+            eps, re_bed, lam, drift, steps, seconds = \
+                mapped_run(args.re, n, args.map_from, args.end_time, args.np,
+                           args.write_interval, args.box, env)
         else:
             eps, re_bed, lam, drift, steps, seconds = \
                 run(args.re, n, args.end_time, args.np, args.write_interval, args.box, env)
