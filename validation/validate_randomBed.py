@@ -78,12 +78,12 @@ def mapped_run(re_number, n, coarse, end_time, ranks, write_interval, box, env):
     its velocity, pressure and carried force mapped onto the finer mesh
     (mapFields -consistent) and its driving pressure gradient, then run to
     end_time. At fine N this settles in less than half the flow time of a
-    start from rest (validation/README.md, random bed N = 40). Lambda is averaged over the last
-    quarter of this run; the wall time adds the coarse run's."""
+    start from rest (validation/README.md, random bed N = 40). Lambda is
+    averaged over the last quarter of this run; the wall time adds the
+    coarse run's."""
     source = Case(RUNS / f"{name(box)}_{re_number:g}_{coarse}", env)
-    if not (source.path / "log.pimpleDLMFoam").exists():
-        raise SystemExit(f"{source.path}: no run to map from (run N = {coarse} first)")
-    source_ranks, written, start = latest_write(source)
+    source_ranks, written, start = latest_write(
+        source, f"no run to map from (run N = {coarse} first)")
     if float(start) >= end_time:
         raise SystemExit(f"{source.path}: latest time {start} is not before the end "
                          f"time {end_time:g}")
@@ -91,11 +91,11 @@ def mapped_run(re_number, n, coarse, end_time, ranks, write_interval, box, env):
     case.run("./Allrun.pre", re_number, n, log="Allrun.pre")
     (case.path / "0").rename(case.path / start)
     # mapFields maps only into fields the target has
-    velocity = (case.path / start / "U").read_text()
-    (case.path / start / "rigidForce").write_text(
-        velocity.replace("object      U;", "object      rigidForce;")
-        .replace("[0 1 -1 0 0 0 0]", "[1 -2 -2 0 0 0 0]")
-        .replace("uniform (0.008 0 0)", "uniform (0 0 0)"))
+    force = f"{start}/rigidForce"
+    shutil.copy(case.path / start / "U", case.path / force)
+    case.set(force, "FoamFile/object", "rigidForce")
+    case.set(force, "dimensions", "[1 -2 -2 0 0 0 0]")
+    case.set(force, "internalField", "uniform (0 0 0)")
     case.run("mapFields", source.path, "-consistent", "-sourceTime", start,
              *(["-parallelSource"] if source_ranks else []))
     (case.path / start / "uniform").mkdir()
@@ -113,9 +113,7 @@ def extend(re_number, n, end_time, write_interval, box, env):
     the ranks it was decomposed for; the wall time is the sum of the solver
     logs' clock times (log.pimpleDLMFoam, then log.pimpleDLMFoam.<start>)."""
     case = Case(RUNS / f"{name(box)}_{re_number:g}_{n}", env)
-    if not (case.path / "log.pimpleDLMFoam").exists():
-        raise SystemExit(f"{case.path}: no run to continue (run it without --continue)")
-    ranks, _, latest = latest_write(case)
+    ranks, _, latest = latest_write(case, "no run to continue (run it without --continue)")
     if float(latest) <= 0:
         raise SystemExit(f"{case.path}: no written time after 0 to continue from")
     if float(latest) < end_time:
@@ -124,9 +122,12 @@ def extend(re_number, n, end_time, write_interval, box, env):
     return reduce(case.path) + (solver_seconds(case.path),)
 
 
-def latest_write(case):
+def latest_write(case, missing):
     """The ranks a run was decomposed for (0: serial), the case that holds
-    its written times and the latest of them."""
+    its written times and the latest of them; stops with the message
+    missing if the case never ran."""
+    if not (case.path / "log.pimpleDLMFoam").exists():
+        raise SystemExit(f"{case.path}: {missing}")
     ranks = len(list(case.path.glob("processor[0-9]*")))
     written = Case(case.path / "processor0", case.env) if ranks else case
     return ranks, written, written.times()[-1]
