@@ -42,12 +42,14 @@ HEADER = ["Re", "cellsPerDiameter", "porosity", "Lambda", "Lambda_Ergun",
           "relErrorErgun", "drift", "wallTime_s", "steps"]
 
 
-def set_controls(case, end_time, write_interval):
+def set_controls(case, end_time, write_interval, start=0):
+    """End time and write interval; by default the run writes at its end
+    only (OpenFOAM counts write intervals from the start time)."""
     controls = case.path / "system" / "controlDict"
     text = re.sub(r"^endTime .*$", f"endTime         {end_time:g};",
                   controls.read_text(), flags=re.M)
     controls.write_text(re.sub(r"^writeInterval .*$",
-                               f"writeInterval   {write_interval or end_time:g};",
+                               f"writeInterval   {write_interval or end_time - start:g};",
                                text, flags=re.M))
 
 
@@ -57,10 +59,10 @@ def name(box):
     return "randomBed" if box == 1 else f"randomBed_box{box:g}"
 
 
-def new_case(re_number, n, end_time, write_interval, box, env):
+def new_case(re_number, n, end_time, write_interval, box, env, start=0):
     case = Case.copy(ROOT / "tutorials" / "randomBed",
                      RUNS / f"{name(box)}_{re_number:g}_{n}", env)
-    set_controls(case, end_time, write_interval)
+    set_controls(case, end_time, write_interval, start)
     if box != 1:
         mesh = case.path / "system" / "blockMeshDict"
         mesh.write_text(re.sub(r"^L .*$", f"L   {box:g};", mesh.read_text(), flags=re.M))
@@ -87,7 +89,7 @@ def mapped_run(re_number, n, coarse, end_time, ranks, write_interval, box, env):
     if float(start) >= end_time:
         raise SystemExit(f"{source.path}: latest time {start} is not before the end "
                          f"time {end_time:g}")
-    case = new_case(re_number, n, end_time, write_interval, box, env)
+    case = new_case(re_number, n, end_time, write_interval, box, env, float(start))
     case.run("./Allrun.pre", re_number, n, log="Allrun.pre")
     (case.path / "0").rename(case.path / start)
     # mapFields maps only into fields the target has
@@ -117,7 +119,7 @@ def extend(re_number, n, end_time, write_interval, box, env):
     if float(latest) <= 0:
         raise SystemExit(f"{case.path}: no written time after 0 to continue from")
     if float(latest) < end_time:
-        set_controls(case, end_time, write_interval)
+        set_controls(case, end_time, write_interval, float(latest))
         case.run("pimpleDLMFoam", np=max(ranks, 1), log=f"pimpleDLMFoam.{latest}")
     return reduce(case.path) + (solver_seconds(case.path),)
 
