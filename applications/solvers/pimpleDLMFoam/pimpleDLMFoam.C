@@ -27,7 +27,7 @@ Description
     3. particle motion and new volume fractions (dlmParticleCloud).
 
     The time step also keeps the viscous number nu deltaT/h^2 within
-    maxViscousNumber (system/controlDict, default 2), where the projection
+    maxViscousNumber (system/controlDict, default 1), where the projection
     is stable.
 
     Inputs: constant/transportProperties (rho, nu of the fluid), constant/g,
