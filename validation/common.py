@@ -74,6 +74,40 @@ def ergun_lambda(re_number):
     return 150 + 1.75*re_number
 
 
+def correlation_lambda(drag, porosity, re_number):
+    """Lambda (the DLM paper's eq. 25, its Re = D u/(nu (1 - eps))) of a
+    drag correlation F(phi, Re_s) for random arrays of spheres, in the
+    normalisation of van der Hoef et al. (2005): the drag per sphere without
+    the mean pressure gradient's share over the Stokes drag 3 pi mu D u at
+    the superficial velocity u, Re_s = D u/nu. The pressure gradient is
+    F 18 mu u phi/(D^2 eps), so Lambda = 18 F eps^2/phi; Carman-Kozeny's
+    F = 10 phi/eps^2 gives 180, Ergun's (150 phi + 1.75 Re_s)/(18 eps^2)
+    gives 150 + 1.75 Re."""
+    solid = 1 - porosity
+    return 18*drag(solid, solid*re_number)*porosity**2/solid
+
+
+def beetstra_drag(phi, re_s):
+    """Beetstra, van der Hoef and Kuipers (2007), AIChE J. 53: 489, fitted
+    to lattice-Boltzmann simulations of random arrays, phi <= 0.6,
+    Re_s <= 1000."""
+    eps = 1 - phi
+    return (10*phi/eps**2 + eps**2*(1 + 1.5*phi**0.5)
+            + 0.413*re_s/(24*eps**2)
+            * (1/eps + 3*phi*eps + 8.4*re_s**-0.343)
+            / (1 + 10**(3*phi)*re_s**(-(1 + 4*phi)/2)))
+
+
+def tang_drag(phi, re_s):
+    """Tang, Peters, Kuipers, Kriebitzsch and van der Hoef (2015), AIChE J.
+    61: 688, fitted to immersed-boundary simulations of random arrays,
+    0.1 <= phi <= 0.6, 50 <= Re_s <= 1000."""
+    eps = 1 - phi
+    return (10*phi/eps**2 + eps**2*(1 + 1.5*phi**0.5)
+            + re_s*(0.11*phi*(1 + phi) - 0.00456/eps**4
+                    + (0.169*eps + 0.0644/eps**4)*re_s**-0.343))
+
+
 def stored_rows(path):
     """Rows of a results CSV, numbers as floats and other values as text
     (none if it does not exist)."""

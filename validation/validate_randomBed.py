@@ -11,10 +11,12 @@ mu u) (its eq. 25), G the particles' drag per unit volume (packedBed)
 averaged over the last quarter of the run (from its start, which a
 mapped run takes from the coarser run), its difference from Ergun, the
 drift over that window, wall time and steps; then the observed order and
-the Richardson extrapolate of the three finest resolutions. Rows are merged
-into results/randomBed.csv; results/randomBed.png plots Lambda against
-resolution and the error (against the extrapolate and against Ergun)
-against wall time.
+the Richardson extrapolate of the three finest resolutions, against Ergun
+and the fits to fully resolved simulations of Beetstra et al. (2007) and
+Tang et al. (2015). Rows are merged into results/randomBed.csv;
+results/randomBed.png plots Lambda against resolution for each Re and the
+error (against the extrapolate, and against Ergun, or in Stokes flow
+Beetstra et al.) against wall time.
 
     validation/validate_randomBed.py [--re 900] [--end-time 80] [--np 1] [--box 1]
                                      [--write-interval T] [--continue]
@@ -34,9 +36,9 @@ import shutil
 
 import numpy as np
 
-from common import (Case, RESULTS, ROOT, RUNS, ergun_lambda, foam_environment,
-                    merge_row, packed_bed_rows, plot_speed_error, richardson,
-                    stored_rows, timed_run)
+from common import (Case, RESULTS, ROOT, RUNS, beetstra_drag, correlation_lambda,
+                    ergun_lambda, foam_environment, merge_row, packed_bed_rows,
+                    plot_speed_error, richardson, stored_rows, tang_drag, timed_run)
 
 HEADER = ["Re", "cellsPerDiameter", "porosity", "Lambda", "Lambda_Ergun",
           "relErrorErgun", "drift", "wallTime_s", "steps"]
@@ -200,37 +202,54 @@ def main():
 
 
 def summarise(table):
+    """Per Re: Lambda against resolution with Ergun, the correlations fitted
+    to fully resolved simulations of random arrays (Beetstra et al. 2007,
+    Tang et al. 2015) and the Richardson extrapolate; then the error against
+    wall time. In Stokes flow (Re <= 1) the error is taken against
+    Beetstra's correlation, which there is Carman-Kozeny's 180 fitted to
+    lattice-Boltzmann data, rather than Ergun's 150."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     rows = stored_rows(RESULTS / f"{table}.csv")
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    re_numbers = sorted({r[0] for r in rows})
+    fig, axes = plt.subplots(1, len(re_numbers) + 1, figsize=(5.5*(len(re_numbers) + 1), 4))
     series = {}
-    for re_number in sorted({r[0] for r in rows}):
+    for ax, re_number in zip(axes, re_numbers):
         sel = sorted((r for r in rows if r[0] == re_number), key=lambda r: r[1])
         n = np.array([r[1] for r in sel])
         lam = np.array([r[3] for r in sel])
-        reference = sel[-1][4]
+        ergun = sel[-1][4]
+        # the bed's Re (by its discrete porosity) from Ergun's linear Lambda
+        porosity, re_bed = sel[-1][2], (ergun - ergun_lambda(0))/(ergun_lambda(1) - ergun_lambda(0))
+        correlations = {label: correlation_lambda(drag, porosity, re_bed)
+                        for label, drag in (("Beetstra et al. 2007", beetstra_drag),
+                                            ("Tang et al. 2015", tang_drag))}
         order, extrapolate = richardson(n, lam)
         print(f"Re={re_number:g}: Lambda {', '.join(f'{v:.1f}' for v in lam)} at N = "
               f"{', '.join(str(int(v)) for v in n)}; observed order {order:.2f}, "
-              f"extrapolate {extrapolate:.1f} (Ergun {reference:.1f}, "
-              f"{100*(extrapolate/reference - 1):+.1f}%)")
-        axes[0].plot(n, lam, "o-", label=f"Re {re_number:g} (order {order:.2f})")
-        axes[0].axhline(reference, ls="--", lw=0.8, color="k", label=f"Ergun, Re {re_number:g}")
+              f"extrapolate {extrapolate:.1f}; against it: Ergun {ergun:.1f} "
+              f"({100*(extrapolate/ergun - 1):+.1f}%), "
+              + ", ".join(f"{label} {value:.1f} ({100*(extrapolate/value - 1):+.1f}%)"
+                          for label, value in correlations.items()))
+        ax.plot(n, lam, "o-", label=f"computed (order {order:.2f})")
+        ax.axhline(ergun, ls="--", lw=0.8, color="k", label="Ergun")
+        for (label, value), style in zip(correlations.items(), ("-.", (0, (1, 3)))):
+            ax.axhline(value, ls=style, lw=0.8, color="C2", label=label)
         if np.isfinite(order):
-            axes[0].axhline(extrapolate, ls=":", lw=0.8, color="C1",
-                            label="Richardson extrapolate")
+            ax.axhline(extrapolate, ls=":", lw=0.8, color="C1", label="Richardson extrapolate")
             series[f"Re {re_number:g}, against the extrapolate"] = \
                 [(r[7], abs(r[3]/extrapolate - 1), int(r[1])) for r in sel]
-        series[f"Re {re_number:g}, against Ergun"] = \
-            [(r[7], abs(r[5]), int(r[1])) for r in sel]
-    axes[0].set_xlabel("cells per diameter")
-    axes[0].set_ylabel("Lambda")
-    axes[0].set_title(f"Random bed, {table}.csv")
-    axes[0].legend(fontsize=7)
-    plot_speed_error(axes[1], series, target=5)
-    axes[1].set_title("Error against wall time")
+        reference, label = (ergun, "Ergun") if re_number > 1 else \
+            (correlations["Beetstra et al. 2007"], "Beetstra et al.")
+        series[f"Re {re_number:g}, against {label}"] = \
+            [(r[7], abs(r[3]/reference - 1), int(r[1])) for r in sel]
+        ax.set_xlabel("cells per diameter")
+        ax.set_ylabel("Lambda")
+        ax.set_title(f"Random bed, Re {re_number:g} ({table}.csv)")
+        ax.legend(fontsize=7)
+    plot_speed_error(axes[-1], series, target=5)
+    axes[-1].set_title("Error against wall time")
     fig.tight_layout()
     fig.savefig(RESULTS / f"{table}.png", dpi=120)
 
