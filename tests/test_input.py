@@ -142,7 +142,7 @@ def test_time_step_above_the_viscous_limit(meshed, tmp_path):
     def edit(case):
         case.set("constant/transportProperties", "nu", 1e-2)
     log = run_with(meshed, tmp_path, None, edit=edit)
-    assert "viscous number" in log and "maxViscousNumber 1" in log
+    assert "viscous number" in log and "maxViscousNumber 2" in log
     assert "controlDict" in log and "Reduce deltaT to at most" in log
 
 
