@@ -19,20 +19,22 @@ error (against the extrapolate, and against Ergun, or in Stokes flow
 Beetstra et al.) against wall time.
 
     validation/validate_randomBed.py [--re 900] [--end-time 80] [--np 1] [--box 1]
-                                     [--write-interval T] [--continue]
-                                     [--map-from M] [N ...]
+                                     [--direction x] [--write-interval T]
+                                     [--continue] [--map-from M] [N ...]
         (default N = 8 12 16 20; --np: ranks, decomposePar and mpirun;
         --continue: run the existing runs on from their latest written time,
         as after a stop, to the end time; --map-from M: start from the run
         at M cells per diameter, its latest written fields mapped onto the
         finer mesh, and run from that time to the end time; --box 0.6: the
-        tests' 22-sphere bed, results/randomBed_box0.6.csv)
+        tests' 22-sphere bed, results/randomBed_box0.6.csv; --direction y
+        or z: the flow along that axis, results/randomBed_y.csv and so on)
 """
 
 import argparse
 import pathlib
 import re
 import shutil
+import typing
 
 import numpy as np
 
@@ -55,29 +57,58 @@ def set_controls(case, end_time, write_interval, start=0):
                                text, flags=re.M))
 
 
-def name(box):
-    """Runs and results of the paper's 1 m box as randomBed, others as
-    randomBed_box<side>."""
-    return "randomBed" if box == 1 else f"randomBed_box{box:g}"
+class Bed(typing.NamedTuple):
+    """The side of the periodic cube [m] and the direction of the flow."""
+    box: float = 1
+    direction: str = "x"
+
+    @property
+    def name(self):
+        """Runs and results of the paper's 1 m box along x as randomBed,
+        others with _box<side> and _<direction> appended."""
+        return ("randomBed" + ("" if self.box == 1 else f"_box{self.box:g}")
+                + ("" if self.direction == "x" else f"_{self.direction}"))
 
 
-def new_case(re_number, n, end_time, write_interval, box, env, start=0):
+def turn_flow(case, direction):
+    """Drive the flow along y or z instead of the tutorial's x: its driving
+    velocity (Ubar), initial velocity and packedBed's direction turned."""
+    axis = "xyz".index(direction)
+
+    def turned(match):
+        components = ["0", "0", "0"]
+        components[axis] = match.group(2)
+        return f"{match.group(1)}({' '.join(components)});"
+
+    for file, key in (("system/fvOptions", "Ubar"), ("0/U", "internalField"),
+                      ("system/controlDict", "direction")):
+        path = case.path / file
+        text, count = re.subn(rf"^(\s*{key}\s+(?:uniform\s+)?)\((\S+) 0 0\);", turned,
+                              path.read_text(), flags=re.M)
+        if count != 1:
+            raise SystemExit(f"{path}: no {key} along x to turn")
+        path.write_text(text)
+
+
+def new_case(re_number, n, end_time, write_interval, bed, env, start=0):
     case = Case.copy(ROOT / "tutorials" / "randomBed",
-                     RUNS / f"{name(box)}_{re_number:g}_{n}", env)
+                     RUNS / f"{bed.name}_{re_number:g}_{n}", env)
     set_controls(case, end_time, write_interval, start)
-    if box != 1:
+    if bed.box != 1:
         mesh = case.path / "system" / "blockMeshDict"
-        mesh.write_text(re.sub(r"^L .*$", f"L   {box:g};", mesh.read_text(), flags=re.M))
+        mesh.write_text(re.sub(r"^L .*$", f"L   {bed.box:g};", mesh.read_text(), flags=re.M))
+    if bed.direction != "x":
+        turn_flow(case, bed.direction)
     return case
 
 
-def run(re_number, n, end_time, ranks, write_interval, box, env):
-    case = new_case(re_number, n, end_time, write_interval, box, env)
+def run(re_number, n, end_time, ranks, write_interval, bed, env):
+    case = new_case(re_number, n, end_time, write_interval, bed, env)
     seconds = timed_run(case, "./Allrun", re_number, n, ranks)
     return reduce(case.path) + (seconds,)
 
 
-def mapped_run(re_number, n, coarse, end_time, ranks, write_interval, box, env):
+def mapped_run(re_number, n, coarse, end_time, ranks, write_interval, bed, env):
     """Start at N = n from the latest written time of the run at N = coarse:
     its velocity, pressure and carried force mapped onto the finer mesh
     (mapFields -consistent) and its driving pressure gradient, then run to
@@ -85,13 +116,13 @@ def mapped_run(re_number, n, coarse, end_time, ranks, write_interval, box, env):
     start from rest (validation/README.md, random bed N = 40). Lambda is
     averaged over the last quarter of this run; the wall time adds the
     coarse run's."""
-    source = Case(RUNS / f"{name(box)}_{re_number:g}_{coarse}", env)
+    source = Case(RUNS / f"{bed.name}_{re_number:g}_{coarse}", env)
     source_ranks, written, start = latest_write(
         source, f"no run to map from (run N = {coarse} first)")
     if float(start) >= end_time:
         raise SystemExit(f"{source.path}: latest time {start} is not before the end "
                          f"time {end_time:g}")
-    case = new_case(re_number, n, end_time, write_interval, box, env, float(start))
+    case = new_case(re_number, n, end_time, write_interval, bed, env, float(start))
     case.run("./Allrun.pre", re_number, n, log="Allrun.pre")
     (case.path / "0").rename(case.path / start)
     # mapFields maps only into fields the target has
@@ -112,11 +143,11 @@ def mapped_run(re_number, n, coarse, end_time, ranks, write_interval, box, env):
     return reduce(case.path) + (solver_seconds(case.path),)
 
 
-def extend(re_number, n, end_time, write_interval, box, env):
+def extend(re_number, n, end_time, write_interval, bed, env):
     """Continue an earlier run from its latest written time to end_time, on
     the ranks it was decomposed for; the wall time is the sum of the solver
     logs' clock times (log.pimpleDLMFoam, then log.pimpleDLMFoam.<start>)."""
-    case = Case(RUNS / f"{name(box)}_{re_number:g}_{n}", env)
+    case = Case(RUNS / f"{bed.name}_{re_number:g}_{n}", env)
     ranks, _, latest = latest_write(case, "no run to continue (run it without --continue)")
     if float(latest) <= 0:
         raise SystemExit(f"{case.path}: no written time after 0 to continue from")
@@ -176,29 +207,32 @@ def main():
     parser.add_argument("--box", type=float, default=1,
                         help="side of the periodic cube [m] (1: the paper's 100 spheres;"
                         " 0.6: 22 spheres, the tests' bed)")
+    parser.add_argument("--direction", choices="xyz", default="x",
+                        help="direction of the flow (y, z: results/<table>_<direction>.csv)")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16, 20])
     args = parser.parse_args()
+    bed = Bed(args.box, args.direction)
 
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
     for n in args.resolutions:
         if args.extend:
             eps, re_bed, lam, drift, steps, seconds = \
-                extend(args.re, n, args.end_time, args.write_interval, args.box, env)
+                extend(args.re, n, args.end_time, args.write_interval, bed, env)
         elif args.map_from:
             eps, re_bed, lam, drift, steps, seconds = \
                 mapped_run(args.re, n, args.map_from, args.end_time, args.np,
-                           args.write_interval, args.box, env)
+                           args.write_interval, bed, env)
         else:
             eps, re_bed, lam, drift, steps, seconds = \
-                run(args.re, n, args.end_time, args.np, args.write_interval, args.box, env)
-        merge_row(RESULTS / f"{name(args.box)}.csv", HEADER,
+                run(args.re, n, args.end_time, args.np, args.write_interval, bed, env)
+        merge_row(RESULTS / f"{bed.name}.csv", HEADER,
                   [args.re, n, eps, lam, ergun_lambda(re_bed),
                    lam/ergun_lambda(re_bed) - 1, drift, seconds, steps])
         print(f"Re={args.re:g} N={n:3d} porosity={eps:.4f} Lambda={lam:.1f} "
               f"Ergun={ergun_lambda(re_bed):.1f} ({100*(lam/ergun_lambda(re_bed) - 1):+.1f}%) "
               f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
-    summarise(name(args.box))
+    summarise(bed.name)
 
 
 def summarise(table):
