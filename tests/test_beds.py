@@ -299,9 +299,9 @@ def test_dense_bed_in_stokes_flow_is_steady_at_the_default_time_step(tmp_path, f
     dt/h^2 (maxViscousNumber, default 1): the drag settles, changing by
     less than 1e-5 from step to step over the last half second (2e-7 here),
     to the value at half the step, to 0.5 % (0.08 % here), as at Re 100
-    below. At the former default, 4, it swung by 18 %
-    from step to step, the sign alternating (and at 2 with 24 cells per
-    diameter, by a factor 4)."""
+    above. At the former default, 4, it swung by 18 % from step to step,
+    the sign alternating (and at 2 with 24 cells per diameter, by a factor
+    4)."""
     def settled(rows):
         window = rows[rows[:, 0] >= 1.5, 3]
         assert np.abs(np.diff(window)).max()/window.mean() < 1e-5
