@@ -295,7 +295,17 @@ def test_steady_bed_drag_does_not_depend_on_the_time_step(tmp_path, foam_env):
     assert mean_drag(fine) == pytest.approx(mean_drag(coarse), rel=0.005)
 
 
-def test_dense_bed_in_stokes_flow_is_steady_at_the_default_time_step(tmp_path, foam_env):
+@pytest.fixture(scope="module")
+def stokes_bed_at_the_default_step(tmp_path_factory, foam_env):
+    """The 22-sphere bed in Stokes flow (Re 0.1) at 12 cells per diameter
+    and the default time step, for 2 s: its packedBed rows."""
+    rows, _ = random_bed(tmp_path_factory.mktemp("stokes"), foam_env, "default",
+                         re_number=0.1, end_time=2, cells_per_diameter=12)
+    return rows
+
+
+def test_dense_bed_in_stokes_flow_is_steady_at_the_default_time_step(
+        tmp_path, foam_env, stokes_bed_at_the_default_step):
     """Stokes flow (Re 0.1) through the 22-sphere random bed at 12 cells
     per diameter, where the time step is set by the viscous number nu
     dt/h^2 (maxViscousNumber, default 1): the drag settles, changing by
@@ -309,15 +319,14 @@ def test_dense_bed_in_stokes_flow_is_steady_at_the_default_time_step(tmp_path, f
         assert np.abs(np.diff(window)).max()/window.mean() < 1e-5
         return window[-1]
 
-    default, _ = random_bed(tmp_path, foam_env, "default", re_number=0.1, end_time=2,
-                            cells_per_diameter=12)
     half, _ = random_bed(tmp_path, foam_env, "half", re_number=0.1, end_time=2,
                          cells_per_diameter=12, max_viscous_number=0.5)
-    assert settled(default) == pytest.approx(settled(half), rel=5e-3)
+    assert settled(stokes_bed_at_the_default_step) == pytest.approx(settled(half),
+                                                                 rel=5e-3)
 
 
 def test_dense_bed_in_stokes_flow_without_the_momentum_predictor_is_steady_at_four(
-        tmp_path, foam_env):
+        tmp_path, foam_env, stokes_bed_at_the_default_step):
     """The swing above the viscous limit comes from the momentum predictor:
     it carries the previous step's pressure gradient, which two pressure
     correctors remove only in part once nu dt/h^2 exceeds about 1. Without
@@ -325,15 +334,13 @@ def test_dense_bed_in_stokes_flow_without_the_momentum_predictor_is_steady_at_fo
     and maxViscousNumber 4 (18 % swing with it) approaches the steady drag
     of the default step monotonically over the last 2 s, by less than 1e-4
     a step (4e-5 here), to 0.5 % of it at 8 s (0.1 % here)."""
-    default, _ = random_bed(tmp_path, foam_env, "default", re_number=0.1, end_time=2,
-                            cells_per_diameter=12)
     unpredicted, _ = random_bed(tmp_path, foam_env, "unpredicted", re_number=0.1,
                                 end_time=8, cells_per_diameter=12,
                                 max_viscous_number=4, momentum_predictor=False)
     window = unpredicted[unpredicted[:, 0] >= 6, 3]
     assert (np.diff(window) > 0).all()
     assert np.diff(window).max()/window.mean() < 1e-4
-    assert window[-1] == pytest.approx(default[-1][3], rel=5e-3)
+    assert window[-1] == pytest.approx(stokes_bed_at_the_default_step[-1][3], rel=5e-3)
 
 
 def test_implicit_hold_reduces_the_leak_through_fixed_particles(tmp_path, foam_env):
