@@ -20,14 +20,17 @@ Beetstra et al.) against wall time.
 
     validation/validate_randomBed.py [--re 900] [--end-time 80] [--np 1] [--box 1]
                                      [--direction x] [--write-interval T]
-                                     [--continue] [--map-from M] [N ...]
+                                     [--max-co 0.5] [--continue] [--map-from M]
+                                     [N ...]
         (default N = 8 12 16 20; --np: ranks, decomposePar and mpirun;
         --continue: run the existing runs on from their latest written time,
         as after a stop, to the end time; --map-from M: start from the run
         at M cells per diameter, its latest written fields mapped onto the
         finer mesh, and run from that time to the end time; --box 0.6: the
         tests' 22-sphere bed, results/randomBed_box0.6.csv; --direction y
-        or z: the flow along that axis, results/randomBed_y.csv and so on)
+        or z: the flow along that axis, results/randomBed_y.csv and so on;
+        --max-co 1: the time step at Courant number 1 instead of the
+        tutorial's 0.5, results/randomBed_co1.csv)
 """
 
 import argparse
@@ -46,28 +49,35 @@ HEADER = ["Re", "cellsPerDiameter", "porosity", "Lambda", "Lambda_Ergun",
           "relErrorErgun", "drift", "wallTime_s", "steps"]
 
 
-def set_controls(case, end_time, write_interval, start=0):
-    """End time and write interval; by default the run writes at its end
-    only (OpenFOAM counts write intervals from the start time)."""
+def set_controls(case, end_time, write_interval, start=0, max_co=None):
+    """End time, write interval and, if given, the Courant number; by
+    default the run writes at its end only (OpenFOAM counts write intervals
+    from the start time)."""
     controls = case.path / "system" / "controlDict"
     text = re.sub(r"^endTime .*$", f"endTime         {end_time:g};",
                   controls.read_text(), flags=re.M)
+    if max_co is not None:
+        text = re.sub(r"^maxCo .*$", f"maxCo           {max_co:g};", text, flags=re.M)
     controls.write_text(re.sub(r"^writeInterval .*$",
                                f"writeInterval   {write_interval or end_time - start:g};",
                                text, flags=re.M))
 
 
 class Bed(typing.NamedTuple):
-    """The side of the periodic cube [m] and the direction of the flow."""
+    """The side of the periodic cube [m], the direction of the flow and the
+    Courant number that sets the time step."""
     box: float = 1
     direction: str = "x"
+    max_co: float = 0.5
 
     @property
     def name(self):
-        """Runs and results of the paper's 1 m box along x as randomBed,
-        others with _box<side> and _<direction> appended."""
+        """Runs and results of the paper's 1 m box along x at the tutorial's
+        Courant number as randomBed, others with _box<side>, _<direction>
+        and _co<Courant number> appended."""
         return ("randomBed" + ("" if self.box == 1 else f"_box{self.box:g}")
-                + ("" if self.direction == "x" else f"_{self.direction}"))
+                + ("" if self.direction == "x" else f"_{self.direction}")
+                + ("" if self.max_co == 0.5 else f"_co{self.max_co:g}"))
 
 
 def turn_flow(case, direction):
@@ -93,7 +103,7 @@ def turn_flow(case, direction):
 def new_case(re_number, n, end_time, write_interval, bed, env, start=0):
     case = Case.copy(ROOT / "tutorials" / "randomBed",
                      RUNS / f"{bed.name}_{re_number:g}_{n}", env)
-    set_controls(case, end_time, write_interval, start)
+    set_controls(case, end_time, write_interval, start, bed.max_co)
     if bed.box != 1:
         mesh = case.path / "system" / "blockMeshDict"
         mesh.write_text(re.sub(r"^L .*$", f"L   {bed.box:g};", mesh.read_text(), flags=re.M))
@@ -209,9 +219,12 @@ def main():
                         " 0.6: 22 spheres, the tests' bed)")
     parser.add_argument("--direction", choices="xyz", default="x",
                         help="direction of the flow (y, z: results/<table>_<direction>.csv)")
+    parser.add_argument("--max-co", type=float, default=0.5,
+                        help="Courant number that sets the time step (other than 0.5:"
+                        " results/<table>_co<value>.csv)")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16, 20])
     args = parser.parse_args()
-    bed = Bed(args.box, args.direction)
+    bed = Bed(args.box, args.direction, args.max_co)
 
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
