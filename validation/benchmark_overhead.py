@@ -32,12 +32,14 @@ def write(path, cls, obj, body):
     path.write_text(HEADER.format(cls=cls, obj=obj) + body)
 
 
-def make_case(name, solver, n_particles, steps, env, motion="free"):
+def make_case(name, solver, n_particles, steps, env, motion="free", n_cells=N_CELLS):
+    """The lid-driven cavity of n_cells^3 cells (the particles' size is
+    set for the default, 48^3) for the given solver, meshed."""
     case = Case.copy(ROOT / "tests" / "cases" / "sphereBox", RUNS / name, env)
     p = case.path
     write(p / "system/blockMeshDict", "dictionary", "blockMeshDict", f"""
 vertices ((0 0 0) ({L} 0 0) ({L} {L} 0) (0 {L} 0) (0 0 {L}) ({L} 0 {L}) ({L} {L} {L}) (0 {L} {L}));
-blocks (hex (0 1 2 3 4 5 6 7) ({N_CELLS} {N_CELLS} {N_CELLS}) simpleGrading (1 1 1));
+blocks (hex (0 1 2 3 4 5 6 7) ({n_cells} {n_cells} {n_cells}) simpleGrading (1 1 1));
 boundary
 (
     walls {{ type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1)); }}
