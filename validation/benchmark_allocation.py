@@ -6,7 +6,7 @@ serving allocations from mmap, so each such temporary (OpenFOAM makes many
 a step: gradients, interpolates, matrix coefficients) is a fresh mapping
 whose pages the kernel zeroes on first touch. etc/bashrc sets
 GLIBC_TUNABLES so that large blocks stay on the heap (mmap_max=0) and the
-heap keeps its top (trim_threshold).
+heap never gives its top back (trim_threshold at its largest).
 
 This benchmark runs pimpleDLMFoam on the lid-driven cavity of
 benchmark_overhead.py, without particles, at n^3 cells on one core, with
