@@ -22,16 +22,18 @@ def foam_environment():
 def packed_bed_rows(case_path, name="bed"):
     """Rows of a packedBed function object's output: t u eps G_drag
     G_patches Re Lambda Lambda_Ergun dragPerParticle F/Fs. A restarted run
-    writes a file per start time; a later start replaces the rows it
-    repeats."""
+    writes a file per start time, and a second start from the same time
+    writes packedBed_<time>.dat beside the first; a later start replaces
+    the rows it repeats."""
     starts = sorted((pathlib.Path(case_path) / "postProcessing" / name).iterdir(),
                     key=lambda d: float(d.name))
     rows = []
     for start in starts:
-        rows = [r for r in rows if r[0] <= float(start.name)]
-        rows += [[float(v) for v in line.split()]
-                 for line in (start / "packedBed.dat").read_text().splitlines()
-                 if line.strip() and not line.startswith("#")]
+        for output in sorted(start.glob("packedBed*.dat"), key=lambda f: f.stat().st_mtime):
+            rows = [r for r in rows if r[0] <= float(start.name)]
+            rows += [[float(v) for v in line.split()]
+                     for line in output.read_text().splitlines()
+                     if line.strip() and not line.startswith("#")]
     return np.array(rows)
 
 

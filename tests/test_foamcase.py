@@ -1,10 +1,11 @@
 """The test helpers read the fields OpenFOAM writes, in either format."""
 
+import os
 import re
 
 import numpy as np
 
-from foamcase import ROOT, Case
+from foamcase import ROOT, Case, packed_bed_rows
 
 
 def test_binary_and_ascii_fields_read_alike(tmp_path, foam_env):
@@ -32,3 +33,23 @@ def test_binary_and_ascii_fields_read_alike(tmp_path, foam_env):
                            .read_text(), re.M).group(1))
     centres = (np.arange(4) + 0.5)*side/4
     assert np.allclose(np.sort(np.unique(np.round(cx, 12))), centres, atol=1e-12)
+
+
+def test_packed_bed_rows_of_runs_restarted_from_the_same_time(tmp_path):
+    """A run from 0 written at 1 and 2, restarted from 1 and stopped, then
+    restarted from 1 again: OpenFOAM writes the second restart's rows to
+    packedBed_1.dat beside the first restart's packedBed.dat. The series
+    is the first run to 1, then the latest restart, whatever the files'
+    names."""
+    def write(start, name, times, value):
+        folder = tmp_path / "postProcessing" / "bed" / start
+        folder.mkdir(parents=True, exist_ok=True)
+        (folder / name).write_text("# t u\n" + "".join(f"{t} {value}\n" for t in times))
+
+    write("0", "packedBed.dat", [0.5, 1, 1.5, 2], 0)
+    write("1", "packedBed.dat", [1.5], 1)
+    write("1", "packedBed_1.dat", [1.5, 2, 2.5], 2)
+    old = tmp_path / "postProcessing" / "bed" / "1" / "packedBed.dat"
+    os.utime(old, (0, 0))
+    np.testing.assert_array_equal(packed_bed_rows(tmp_path),
+                                  [[0.5, 0], [1, 0], [1.5, 2], [2, 2], [2.5, 2]])
