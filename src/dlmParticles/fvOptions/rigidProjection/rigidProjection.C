@@ -246,18 +246,66 @@ void Foam::fv::rigidProjection::updateRegions()
     sampleFaces_.setSize(nParticles);
     sampleCoeffs_.setSize(nParticles);
 
+    // A profile whose first sample is a cell left to the flow is linear:
+    // the cells left to the flow known, the regions are found again (the
+    // same cells, other weights)
     markInsideCells();
-    for (label i = 0; i < nParticles; ++i)
+    label nSearches = 1;
+    findRegions();
+    if (markLeftToFlow())
     {
-        findRegion(i);
+        findRegions();
+        ++nSearches;
     }
-    resolveSharedCells();
     markGapFaces();
+
+    if (debug)
+    {
+        label nForced = 0;
+        for (const DynamicList<label>& cells : regionCells_)
+        {
+            nForced += cells.size();
+        }
+        Info<< type() << ": " << returnReduce(nForced, sumOp<label>())
+            << " forced cells, "
+            << returnReduce(sum(leftToFlow_), sumOp<label>())
+            << " left to the flow, found in " << nSearches << " searches"
+            << endl;
+    }
 
     restrictForce();
     heldForce_ = force_.primitiveField();
     sumRegionGeometry();
     regionTimeIndex_ = timeIndex;
+}
+
+
+void Foam::fv::rigidProjection::findRegions()
+{
+    forAll(regionCells_, i)
+    {
+        findRegion(i);
+    }
+    resolveSharedCells();
+}
+
+
+void Foam::fv::rigidProjection::exchangeAcross
+(
+    const labelList& cellValues,
+    labelList& across,
+    labelList& secondLayer
+) const
+{
+    syncTools::swapBoundaryCellList(mesh_, cellValues, across);
+    forAll(secondLayer, bFacei)
+    {
+        secondLayer[bFacei] =
+            secondLayerCell_[bFacei] >= 0
+          ? cellValues[secondLayerCell_[bFacei]]
+          : -1;
+    }
+    syncTools::swapBoundaryFaceList(mesh_, secondLayer);
 }
 
 
@@ -289,20 +337,7 @@ void Foam::fv::rigidProjection::markInsideCells()
         }
     }
 
-    auto exchange = [&](const labelList& cellValues, labelList& across,
-                        labelList& secondLayer)
-    {
-        syncTools::swapBoundaryCellList(mesh_, cellValues, across);
-        forAll(secondLayer, bFacei)
-        {
-            secondLayer[bFacei] =
-                secondLayerCell_[bFacei] >= 0
-              ? cellValues[secondLayerCell_[bFacei]]
-              : -1;
-        }
-        syncTools::swapBoundaryFaceList(mesh_, secondLayer);
-    };
-    exchange(insideOf_, insideAcross_, insideSecondLayer_);
+    exchangeAcross(insideOf_, insideAcross_, insideSecondLayer_);
 
     // The body next to each fluid cell, across its faces
     auto addBody = [](label& next, const label body)
@@ -339,28 +374,53 @@ void Foam::fv::rigidProjection::markInsideCells()
             insideAcross_[bFacei]
         );
     }
-    exchange(nextTo_, nextToAcross_, nextToSecondLayer_);
+    exchangeAcross(nextTo_, nextToAcross_, nextToSecondLayer_);
+
+    leftToFlow_ = 0;
+    leftToFlowAcross_ = 0;
+    leftToFlowSecondLayer_ = 0;
+}
+
+
+bool Foam::fv::rigidProjection::markLeftToFlow()
+{
+    labelList forced(mesh_.nCells(), 0);
+    for (const DynamicList<label>& cells : regionCells_)
+    {
+        for (const label celli : cells)
+        {
+            forced[celli] = 1;
+        }
+    }
+    forAll(leftToFlow_, celli)
+    {
+        if (insideOf_[celli] < 0 && nextTo_[celli] != -1 && !forced[celli])
+        {
+            leftToFlow_[celli] = 1;
+        }
+    }
+    exchangeAcross(leftToFlow_, leftToFlowAcross_, leftToFlowSecondLayer_);
+
+    bool sampled = false;
+    forAll(sampleCells_, i)
+    {
+        forAll(sampleCells_[i], s)
+        {
+            if (sampleLeftToFlow(sampleCells_[i][s], sampleFaces_[i][s]))
+            {
+                sampled = true;
+                break;
+            }
+        }
+    }
+    return returnReduce(sampled, orOp<bool>());
 }
 
 
 void Foam::fv::rigidProjection::markGapFaces()
 {
-    // Fluid cells next to a body that no profile forces: the narrow gaps
-    // left to the flow
-    labelList gap(mesh_.nCells(), 0);
-    forAll(gap, celli)
-    {
-        gap[celli] = insideOf_[celli] < 0 && nextTo_[celli] != -1;
-    }
-    for (const DynamicList<label>& cells : regionCells_)
-    {
-        for (const label celli : cells)
-        {
-            gap[celli] = 0;
-        }
-    }
-    labelList gapAcross;
-    syncTools::swapBoundaryCellList(mesh_, gap, gapAcross);
+    const labelList& gap = leftToFlow_;
+    const labelList& gapAcross = leftToFlowAcross_;
 
     scalarField& internal = blendingFactor_.primitiveFieldRef();
     forAll(internal, facei)
@@ -415,6 +475,61 @@ bool Foam::fv::rigidProjection::sampleUsable
         next = second ? nextToSecondLayer_[bFacei] : nextToAcross_[bFacei];
     }
     return inside < 0 && (next == -1 || next == body);
+}
+
+
+bool Foam::fv::rigidProjection::sampleLeftToFlow
+(
+    const label celli,
+    const labelPair& face
+) const
+{
+    if (celli >= 0)
+    {
+        return leftToFlow_[celli] > 0;
+    }
+    const fvPatch& fp = mesh_.boundary()[face.first()];
+    if (!fp.coupled())
+    {
+        return false;
+    }
+    const label bFacei = fp.start() + face.second() - mesh_.nInternalFaces();
+    return
+        celli == secondLayerSample
+      ? leftToFlowSecondLayer_[bFacei] > 0
+      : leftToFlowAcross_[bFacei] > 0;
+}
+
+
+bool Foam::fv::rigidProjection::sampleBeyond
+(
+    const label celli,
+    const labelPair& face,
+    const vector& e,
+    label& nextCell,
+    labelPair& nextFace,
+    vector& delta
+) const
+{
+    if (celli >= 0)
+    {
+        return nextAlong(celli, e, nextCell, nextFace, delta);
+    }
+    if (celli == secondLayerSample || !mesh_.boundary()[face.first()].coupled())
+    {
+        return false;
+    }
+    const label bFacei =
+        mesh_.boundary()[face.first()].start() + face.second()
+      - mesh_.nInternalFaces();
+    if (!secondLayerAcross_[bFacei])
+    {
+        return false;
+    }
+    nextCell = secondLayerSample;
+    nextFace = face;
+    delta = secondLayerDelta_[bFacei];
+    return true;
 }
 
 
@@ -579,6 +694,8 @@ void Foam::fv::rigidProjection::findRegion(const label i)
 
             const scalar t =
                 shape.surfaceCrossing(Rt & (C[celli] - X), Rt & e, L);
+            const label outCell = out->celli;
+            const labelPair& outFace = out->face;
             const scalar Lout = -(e & out->delta);
             const scalar w = sqr(e & n) + SMALL;
 
@@ -588,25 +705,8 @@ void Foam::fv::rigidProjection::findRegion(const label i)
             label out2Cell = -1;
             labelPair out2Face(-1, -1);
             vector delta2(Zero);
-            bool quadratic = false;
-            if (out->celli >= 0)
-            {
-                quadratic =
-                    nextAlong(out->celli, -e, out2Cell, out2Face, delta2);
-            }
-            else if (mesh_.boundary()[out->face.first()].coupled())
-            {
-                const label bFacei =
-                    mesh_.boundary()[out->face.first()].start()
-                  + out->face.second() - mesh_.nInternalFaces();
-                if (secondLayerAcross_[bFacei])
-                {
-                    out2Cell = secondLayerSample;
-                    out2Face = out->face;
-                    delta2 = secondLayerDelta_[bFacei];
-                    quadratic = true;
-                }
-            }
+            bool quadratic =
+                sampleBeyond(outCell, outFace, -e, out2Cell, out2Face, delta2);
             // Two or three fluid cells between surfaces: forced towards
             // each other they would block the gap, so leave the line to the
             // flow
@@ -615,7 +715,11 @@ void Foam::fv::rigidProjection::findRegion(const label i)
                 continue;
             }
             const scalar Lout2 = -(e & delta2);
-            quadratic = quadratic && Lout2 > 0.5*Lout;
+            // A first sample left to the flow takes the linear profile's
+            // weight, at most a half, not the quadratic's, up to 1
+            quadratic =
+                quadratic && Lout2 > 0.5*Lout
+             && !sampleLeftToFlow(outCell, outFace);
 
             scalar aLine, cOut, cOut2 = 0;
             if (quadratic)
@@ -633,8 +737,8 @@ void Foam::fv::rigidProjection::findRegion(const label i)
             weightSum += w;
             a += w*aLine;
             q += w*aLine*(C[celli] + t*e - X);
-            sampleCells.append(out->celli);
-            sampleFaces.append(out->face);
+            sampleCells.append(outCell);
+            sampleFaces.append(outFace);
             sampleCoeffs.append(w*cOut);
             if (quadratic)
             {
@@ -987,6 +1091,9 @@ Foam::fv::rigidProjection::rigidProjection
     nextTo_(mesh.nCells(), -1),
     nextToAcross_(mesh.nBoundaryFaces(), -1),
     nextToSecondLayer_(mesh.nBoundaryFaces(), -1),
+    leftToFlow_(mesh.nCells(), 0),
+    leftToFlowAcross_(mesh.nBoundaryFaces(), 0),
+    leftToFlowSecondLayer_(mesh.nBoundaryFaces(), 0),
     blendingFactor_
     (
         IOobject
