@@ -694,8 +694,6 @@ void Foam::fv::rigidProjection::findRegion(const label i)
 
             const scalar t =
                 shape.surfaceCrossing(Rt & (C[celli] - X), Rt & e, L);
-            const label outCell = out->celli;
-            const labelPair& outFace = out->face;
             const scalar Lout = -(e & out->delta);
             const scalar w = sqr(e & n) + SMALL;
 
@@ -705,8 +703,15 @@ void Foam::fv::rigidProjection::findRegion(const label i)
             label out2Cell = -1;
             labelPair out2Face(-1, -1);
             vector delta2(Zero);
-            bool quadratic =
-                sampleBeyond(outCell, outFace, -e, out2Cell, out2Face, delta2);
+            bool quadratic = sampleBeyond
+            (
+                out->celli,
+                out->face,
+                -e,
+                out2Cell,
+                out2Face,
+                delta2
+            );
             // Two or three fluid cells between surfaces: forced towards
             // each other they would block the gap, so leave the line to the
             // flow
@@ -719,7 +724,7 @@ void Foam::fv::rigidProjection::findRegion(const label i)
             // weight, at most a half, not the quadratic's, up to 1
             quadratic =
                 quadratic && Lout2 > 0.5*Lout
-             && !sampleLeftToFlow(outCell, outFace);
+             && !sampleLeftToFlow(out->celli, out->face);
 
             scalar aLine, cOut, cOut2 = 0;
             if (quadratic)
@@ -737,8 +742,8 @@ void Foam::fv::rigidProjection::findRegion(const label i)
             weightSum += w;
             a += w*aLine;
             q += w*aLine*(C[celli] + t*e - X);
-            sampleCells.append(outCell);
-            sampleFaces.append(outFace);
+            sampleCells.append(out->celli);
+            sampleFaces.append(out->face);
             sampleCoeffs.append(w*cOut);
             if (quadratic)
             {
