@@ -246,9 +246,9 @@ void Foam::fv::rigidProjection::updateRegions()
     sampleFaces_.setSize(nParticles);
     sampleCoeffs_.setSize(nParticles);
 
-    // A profile whose first sample is a cell left to the flow is linear:
-    // the cells left to the flow known, the regions are found again (the
-    // same cells, other weights)
+    // A profile whose first sample is a cell left to the flow is linear;
+    // those cells are known once the regions are, which are then found
+    // again where one is sampled (the same cells, other weights)
     markInsideCells();
     label nSearches = 1;
     findRegions();
@@ -406,11 +406,9 @@ bool Foam::fv::rigidProjection::markLeftToFlow()
     {
         forAll(sampleCells_[i], s)
         {
-            if (sampleLeftToFlow(sampleCells_[i][s], sampleFaces_[i][s]))
-            {
-                sampled = true;
-                break;
-            }
+            sampled =
+                sampled
+             || sampleLeftToFlow(sampleCells_[i][s], sampleFaces_[i][s]);
         }
     }
     return returnReduce(sampled, orOp<bool>());
@@ -498,38 +496,6 @@ bool Foam::fv::rigidProjection::sampleLeftToFlow
         celli == secondLayerSample
       ? leftToFlowSecondLayer_[bFacei] > 0
       : leftToFlowAcross_[bFacei] > 0;
-}
-
-
-bool Foam::fv::rigidProjection::sampleBeyond
-(
-    const label celli,
-    const labelPair& face,
-    const vector& e,
-    label& nextCell,
-    labelPair& nextFace,
-    vector& delta
-) const
-{
-    if (celli >= 0)
-    {
-        return nextAlong(celli, e, nextCell, nextFace, delta);
-    }
-    if (celli == secondLayerSample || !mesh_.boundary()[face.first()].coupled())
-    {
-        return false;
-    }
-    const label bFacei =
-        mesh_.boundary()[face.first()].start() + face.second()
-      - mesh_.nInternalFaces();
-    if (!secondLayerAcross_[bFacei])
-    {
-        return false;
-    }
-    nextCell = secondLayerSample;
-    nextFace = face;
-    delta = secondLayerDelta_[bFacei];
-    return true;
 }
 
 
@@ -703,15 +669,25 @@ void Foam::fv::rigidProjection::findRegion(const label i)
             label out2Cell = -1;
             labelPair out2Face(-1, -1);
             vector delta2(Zero);
-            bool quadratic = sampleBeyond
-            (
-                out->celli,
-                out->face,
-                -e,
-                out2Cell,
-                out2Face,
-                delta2
-            );
+            bool quadratic = false;
+            if (out->celli >= 0)
+            {
+                quadratic =
+                    nextAlong(out->celli, -e, out2Cell, out2Face, delta2);
+            }
+            else if (mesh_.boundary()[out->face.first()].coupled())
+            {
+                const label bFacei =
+                    mesh_.boundary()[out->face.first()].start()
+                  + out->face.second() - mesh_.nInternalFaces();
+                if (secondLayerAcross_[bFacei])
+                {
+                    out2Cell = secondLayerSample;
+                    out2Face = out->face;
+                    delta2 = secondLayerDelta_[bFacei];
+                    quadratic = true;
+                }
+            }
             // Two or three fluid cells between surfaces: forced towards
             // each other they would block the gap, so leave the line to the
             // flow
