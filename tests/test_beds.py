@@ -201,7 +201,7 @@ def test_dense_random_bed_at_high_reynolds_number_is_bounded_and_balances_moment
         tmp_path, foam_env):
     """A random packing of 22 fixed spheres near contact (gaps down to 1e-7
     diameters) at Re 900 and 8 cells per diameter, driven to its
-    superficial velocity, for 24 s (the flow settles more slowly since
+    superficial velocity, for 60 s (the flow settles more slowly since
     the flux keeps its full time correction). Interface cells of different spheres once sampled
     each other across gaps of three cells; the carried force amplified the
     loop by about 10 % a step, sign alternating, and the run died within 30
@@ -210,24 +210,31 @@ def test_dense_random_bed_at_high_reynolds_number_is_bounded_and_balances_moment
     density in the fixed spheres' mixed cells the convection term added
     6 %), and does not depend on the density of fixed spheres. With the
     tutorial's convection scheme (LUST, blended with limitedLinearV 1 in
-    the gaps left to the flow) the flow is weakly unsteady: the drag swings
-    by about 2 % over some 30 s (it was steady to 0.3 % with limitedLinearV
-    1 everywhere)."""
-    rows, gradient = random_bed(tmp_path, foam_env, "heavy", 2500, end_time=24)
+    the gaps left to the flow) the flow develops over some 30 s, with a
+    transient of a few percent in the drag between 20 and 30 s (a backward
+    jet through one pore; the step falls by 20 % for 2 s), then settles:
+    over 50 to 150 s the drag swings by 1.4 % and the step stays at the
+    Courant limit's 0.167 s. A run of 60 s checks the settled flow."""
+    rows, gradient = random_bed(tmp_path, foam_env, "heavy", 2500, end_time=60)
     t, u, eps, g_drag = rows[-1][:4]
-    assert t == pytest.approx(24, abs=0.2)
+    assert t == pytest.approx(60, abs=0.2)
     assert u == pytest.approx(0.008, rel=1e-6)
     assert 0.38 < eps < 0.40
     assert g_drag == pytest.approx(gradient, rel=1e-4)
-    # Bounded and smooth: over the last quarter of the run the drag varies
-    # by less than 5 %, and by less than 2e-3 from step to step (the loop
-    # that killed the run changed it by 10 % a step, alternating in sign)
-    window = rows[rows[:, 0] >= 18, 3]
-    assert (window.max() - window.min())/window.mean() < 0.05
+    # Bounded and smooth once settled: over the last third of the run the
+    # drag varies by less than 3 %, and by less than 2e-3 from step to step
+    # (the loop that killed the run changed it by 10 % a step, alternating
+    # in sign), and no step falls 10 % below the median (a local runaway
+    # drives the adaptive step down; the steps that meet the end time are
+    # left out)
+    window = rows[rows[:, 0] >= 40, 3]
+    assert (window.max() - window.min())/window.mean() < 0.03
     assert np.abs(np.diff(window)).max()/window.mean() < 2e-3
+    steps = np.diff(rows[(rows[:, 0] >= 40) & (rows[:, 0] <= 58), 0])
+    assert steps.min() > 0.9*np.median(steps)
 
     rows_light, gradient_light = random_bed(tmp_path, foam_env, "light", 1000,
-                                            end_time=24)
+                                            end_time=60)
     assert gradient_light == pytest.approx(gradient, rel=1e-9)
     assert rows_light[-1][3] == pytest.approx(g_drag, rel=1e-9)
 
