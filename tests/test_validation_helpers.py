@@ -1,14 +1,17 @@
 """Helpers of the validation scripts that carry physics: the conversion of
-drag correlations for random arrays of spheres to the DLM paper's Lambda."""
+drag correlations for random arrays of spheres to the DLM paper's Lambda,
+and the layered Ergun estimates of the anisotropic beds."""
 
 import pathlib
 import sys
 
+import numpy as np
 import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "validation"))
 from common import (beetstra_drag, correlation_lambda, ergun_lambda,  # noqa: E402
                     tang_drag)
+import validate_anisotropicBed as anisotropic  # noqa: E402
 
 
 @pytest.mark.parametrize("porosity", [0.36, 0.3983, 0.48])
@@ -38,3 +41,24 @@ def test_correlations_for_the_papers_random_bed():
     assert correlation_lambda(beetstra_drag, 0.3983, 897.49) == pytest.approx(1348, abs=1)
     assert correlation_lambda(tang_drag, 0.3983, 897.49) == pytest.approx(767, abs=1)
     assert ergun_lambda(897.49) == pytest.approx(1721, abs=1)
+
+
+@pytest.mark.parametrize("width", [1, 2])
+def test_layered_ergun_of_a_uniform_lattice_is_ergun_at_its_porosity(width):
+    """A lattice whose spacing along the band's axis (0.1) divides the band
+    and the rest has the same porosity in both layers, so the parallel and
+    the series estimates are Ergun's at the bed's porosity, also in a box
+    twice as wide along y, where the spheres at y = 1.95 cross the periodic
+    face at 2 (a period or a cross-section of the unit cube would count the
+    wrong spheres)."""
+    box = anisotropic.Box(width)
+    volume = 4/3*np.pi*anisotropic.RADIUS**3
+    for axis, series in ((1, False), (0, True)):
+        spacing = [0.5, 0.5, 0.5]
+        spacing[axis] = 0.1
+        sites = [np.arange(h/2, extent, h) for h, extent in zip(spacing, box.extent)]
+        centres = np.column_stack([c.ravel() for c in np.meshgrid(*sites)])
+        eps = 1 - len(centres)*volume/(box.extent[0]*box.extent[1]*box.extent[2])
+        assert 0.7 < eps < 0.8
+        assert anisotropic.layered_ergun(centres, axis, series, box) == \
+            pytest.approx(anisotropic.ergun_gradient(eps, anisotropic.U), rel=1e-9)

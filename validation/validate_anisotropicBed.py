@@ -29,9 +29,12 @@ difference from Ergun against wall time. For the layered beds each layer's
 flow and pressure drop from the final fields, against Ergun at the layer's
 porosity, go to results/anisotropicBed_layers.csv.
 
-    validation/validate_anisotropicBed.py [--end-time 80] [--beds a,b] [N ...]
+    validation/validate_anisotropicBed.py [--end-time 80] [--beds a,b] [--width 1] [N ...]
         (default N = 8 12 16, all four beds; --beds runs some of them, so
-        that two calls can share the cores)
+        that two calls can share the cores; --width W: the box W m wide
+        along y, across the parallel bed's band, which is then 0.3 W wide,
+        every bed packed at the same solid fractions in that box; runs and
+        tables as anisotropicBed_width<W>)
 """
 
 import argparse
@@ -46,18 +49,33 @@ from common import (Case, RESULTS, ROOT, RUNS, foam_environment, merge_row,
                     packed_bed_rows, plot_speed_error, richardson, stored_rows,
                     timed_run)
 
-TABLE = RESULTS / "anisotropicBed.csv"
 HEADER = ["bed", "cellsPerDiameter", "porosity", "pressureDrop_m2s2",
           "ergun_m2s2", "relDiffErgun", "drift", "wallTime_s", "steps"]
-LAYERS = RESULTS / "anisotropicBed_layers.csv"
 LAYERS_HEADER = ["bed", "cellsPerDiameter", "layer", "porosity",
                  "superficialVelocity", "pressureDrop_m2s2", "ergun_m2s2",
                  "relDiffErgun"]
 
 RADIUS, D, U, L, RHO = 0.11283, 2*0.11283, 0.008, 1.0, 1000.0
 NU = D*U/(100*(1 - 0.42))
-BAND = (0.7, 1.0)           # the depleted band, 0.3 m wide
+BAND = (0.7, 1.0)           # the depleted band, as fractions of the box's side
 BEDS = ["uniform36", "uniform42", "parallel", "series"]
+
+
+class Box:
+    """The periodic box: L along x and z, width along y (across the
+    parallel bed's band); names its runs and tables."""
+
+    def __init__(self, width):
+        self.width = width
+        self.extent = (L, width, L)
+        self.name = "anisotropicBed" + ("" if width == 1 else f"_width{width:g}")
+
+    def band(self, axis):
+        return BAND[0]*self.extent[axis], BAND[1]*self.extent[axis]
+
+    def cross_section(self, axis):
+        """Area of the box normal to the axis."""
+        return self.extent[0]*self.extent[1]*self.extent[2]/self.extent[axis]
 
 
 def ergun_gradient(eps, u):
@@ -66,9 +84,9 @@ def ergun_gradient(eps, u):
             + 1.75*(1 - eps)*u**2/(eps**3*D))
 
 
-def slab_volume(centres, axis, lower, upper):
+def slab_volume(centres, axis, lower, upper, period):
     """Volume of the spheres inside lower <= x[axis] < upper, periodic with
-    period L (spherical caps)."""
+    the period (spherical caps)."""
     def below(h):
         # Volume of a sphere below a plane at height h above its centre
         h = np.clip(h, -RADIUS, RADIUS)
@@ -76,31 +94,36 @@ def slab_volume(centres, axis, lower, upper):
         return 4/3*math.pi*RADIUS**3 - cap
 
     total = 0.0
-    for shift in (-L, 0.0, L):
+    for shift in (-period, 0.0, period):
         c = centres[:, axis] + shift
         total += np.sum(below(upper - c) - below(lower - c))
     return total
 
 
-def pack(fraction, env):
-    """A periodic random packing at the solid fraction (seed 1): centres.
-    Packed in a folder of this call's own, as calls may run together."""
+def pack(fraction, box, env):
+    """A periodic random packing of the box at the solid fraction (seed 1):
+    centres. Packed in a folder of this call's own, as calls may run
+    together."""
     case = Case.copy(ROOT / "tutorials" / "randomBed",
                      RUNS / f"pack_{fraction:g}_{os.getpid()}", env)
     settings = case.path / "system" / "packSpheresDict"
-    settings.write_text(re.sub(r"^solidFraction .*$", f"solidFraction   {fraction};",
-                               settings.read_text(), flags=re.M))
+    text = re.sub(r"^solidFraction .*$", f"solidFraction   {fraction};",
+                  settings.read_text(), flags=re.M)
+    text = re.sub(r"^box .*$", "box             (0 0 0) ({:g} {:g} {:g});".format(*box.extent),
+                  text, flags=re.M)
+    settings.write_text(text)
     case.run("dlmPackSpheres")
     centres = np.loadtxt(case.path / "constant" / "packing.dat", comments="#")[:, :3]
     shutil.rmtree(case.path)
     return centres
 
 
-def deplete(centres, axis, count):
+def deplete(centres, axis, count, box):
     """Remove spheres centred in the band, in a seeded random order, until
     count are left."""
     rng = np.random.default_rng(1)
-    in_band = np.flatnonzero((centres[:, axis] >= BAND[0]) & (centres[:, axis] < BAND[1]))
+    lower, upper = box.band(axis)
+    in_band = np.flatnonzero((centres[:, axis] >= lower) & (centres[:, axis] < upper))
     keep = np.ones(len(centres), bool)
     keep[rng.permutation(in_band)[:len(centres) - count]] = False
     return centres[keep]
@@ -114,42 +137,45 @@ def ergun_velocity(eps, gradient):
     return 2*gradient/(a + math.sqrt(a*a + 4*b*gradient))
 
 
-def layered_ergun(centres, axis, series):
+def layered_ergun(centres, axis, series, box):
     """Ergun's estimate for the two layers of the bed: the band and the
-    rest, with their porosities from the packing."""
-    band_width = BAND[1] - BAND[0]
-    eps2 = 1 - slab_volume(centres, axis, *BAND)/(band_width*L*L)
-    eps1 = 1 - (slab_volume(centres, axis, 0, BAND[0]))/(BAND[0]*L*L)
+    rest, with their porosities from the packing (the gradient along x)."""
+    lower, upper = box.band(axis)
+    period, area = box.extent[axis], box.cross_section(axis)
+    eps2 = 1 - slab_volume(centres, axis, lower, upper, period)/((upper - lower)*area)
+    eps1 = 1 - slab_volume(centres, axis, 0, lower, period)/(lower*area)
     if series:
-        return BAND[0]*ergun_gradient(eps1, U) + band_width*ergun_gradient(eps2, U)
+        return (BAND[0]*ergun_gradient(eps1, U)
+                + (BAND[1] - BAND[0])*ergun_gradient(eps2, U))
     # Parallel: the same gradient in both layers, whose flows add up to U;
     # bisect on the gradient (the flow grows with it)
     lo, hi = 0.0, ergun_gradient(min(eps1, eps2), U)
     for _ in range(200):
         gradient = 0.5*(lo + hi)
         flow = BAND[0]*ergun_velocity(eps1, gradient) \
-            + band_width*ergun_velocity(eps2, gradient)
+            + (BAND[1] - BAND[0])*ergun_velocity(eps2, gradient)
         lo, hi = (gradient, hi) if flow < U else (lo, gradient)
     return 0.5*(lo + hi)
 
 
-def beds(env):
+def beds(box, env):
     """Particle centres and the Ergun estimate of each bed."""
-    dense = pack(0.64, env)
-    loose = pack(0.58, env)
+    dense = pack(0.64, box, env)
+    loose = pack(0.58, box, env)
     # As many spheres as the uniform 42 % bed: the same porosity
-    parallel = deplete(dense, 1, len(loose))
-    series = deplete(dense, 0, len(loose))
+    parallel = deplete(dense, 1, len(loose), box)
+    series = deplete(dense, 0, len(loose), box)
     volume = 4/3*math.pi*RADIUS**3
+    box_volume = L*box.cross_section(0)
     return {
-        "uniform36": (dense, ergun_gradient(1 - len(dense)*volume/L**3, U)*L),
-        "uniform42": (loose, ergun_gradient(1 - len(loose)*volume/L**3, U)*L),
-        "parallel": (parallel, layered_ergun(parallel, 1, series=False)*L),
-        "series": (series, layered_ergun(series, 0, series=True)*L),
+        "uniform36": (dense, ergun_gradient(1 - len(dense)*volume/box_volume, U)*L),
+        "uniform42": (loose, ergun_gradient(1 - len(loose)*volume/box_volume, U)*L),
+        "parallel": (parallel, layered_ergun(parallel, 1, False, box)*L),
+        "series": (series, layered_ergun(series, 0, True, box)*L),
     }
 
 
-def layer_rows(name, case, centres, end_time):
+def layer_rows(name, case, centres, end_time, box):
     """Each layer's superficial velocity and pressure drop from the final
     fields, against Ergun for that layer's porosity: in parallel the drop is
     the bed's (the layers share it) and Ergun's is the one the layer's own
@@ -159,21 +185,25 @@ def layer_rows(name, case, centres, end_time):
     axis = 1 if name == "parallel" else 0
     time = f"{end_time:g}"
     solid = case.internal_field(f"{time}/alpha.solid")
-    n = round(len(solid) ** (1/3))
+    n = round((len(solid)/box.width) ** (1/3))
     # blockMesh numbers the cells x fastest: index [z, y, x], so the
     # coordinate axis a is the array's axis 2 - a
-    fluid = 1 - solid.reshape(n, n, n)
-    ux = case.internal_field(f"{time}/U")[:, 0].reshape(n, n, n)
-    p = case.internal_field(f"{time}/p").reshape(n, n, n)
+    shape = (n, round(n*box.width), n)
+    fluid = 1 - solid.reshape(shape)
+    ux = case.internal_field(f"{time}/U")[:, 0].reshape(shape)
+    p = case.internal_field(f"{time}/p").reshape(shape)
     across = tuple(a for a in (0, 1, 2) if a != 2 - axis)
-    centre = (np.arange(n) + 0.5)/n*L
-    in_band = (centre >= BAND[0]) & (centre < BAND[1])
+    period, area = box.extent[axis], box.cross_section(axis)
+    cells_along = shape[2 - axis]
+    centre = (np.arange(cells_along) + 0.5)/cells_along*period
+    band = box.band(axis)
+    in_band = (centre >= band[0]) & (centre < band[1])
     gradient = packed_bed_rows(case.path)[-1, 3]/RHO
     rows = []
-    for layer, lower, upper, cells in (("band", *BAND, in_band),
-                                       ("rest", 0.0, BAND[0], ~in_band)):
+    for layer, lower, upper, cells in (("band", *band, in_band),
+                                       ("rest", 0.0, band[0], ~in_band)):
         width = upper - lower
-        eps = 1 - slab_volume(centres, axis, lower, upper)/(width*L*L)
+        eps = 1 - slab_volume(centres, axis, lower, upper, period)/(width*area)
         if axis == 1:
             u = ux.mean(axis=across)[cells].mean()
             drop, ergun = gradient*L, ergun_gradient(eps, u)*L
@@ -182,7 +212,7 @@ def layer_rows(name, case, centres, end_time):
             mean_p = (p*fluid).sum(axis=across)/fluid.sum(axis=across)/RHO
 
             def pressure(x):
-                periodic = np.r_[centre - L, centre, centre + L]
+                periodic = np.r_[centre - period, centre, centre + period]
                 return np.interp(x, periodic, np.tile(mean_p, 3))
 
             drop = gradient*width + pressure(lower) - pressure(upper)
@@ -191,8 +221,12 @@ def layer_rows(name, case, centres, end_time):
     return rows
 
 
-def run(name, centres, n, end_time, env):
-    case = Case.copy(ROOT / "tutorials" / "randomBed", RUNS / f"anisotropic_{name}_{n}", env)
+def run_path(name, n, box):
+    return RUNS / (("anisotropic" if box.width == 1 else box.name) + f"_{name}_{n}")
+
+
+def run(name, centres, n, end_time, box, env):
+    case = Case.copy(ROOT / "tutorials" / "randomBed", run_path(name, n, box), env)
     path = case.path
     with open(path / "constant" / "packing.dat", "w") as out:
         out.write(f"# {name}: {len(centres)} spheres\n")
@@ -205,6 +239,13 @@ def run(name, centres, n, end_time, env):
 
     substitute("constant/transportProperties", r"^nu .*$", f"nu              {NU:.8g};")
     substitute("system/blockMeshDict", r"^n .*$", f"n   {round(n*L/D)};")
+    if box.width != 1:
+        # The box W wide along y: the vertices' y and its cell count
+        substitute("system/blockMeshDict", r"^L .*$", f"L   {L:g};\nW   {box.width:g};")
+        substitute("system/blockMeshDict", r"\(\$L \$L (0|\$L)\)", r"($L $W \1)")
+        substitute("system/blockMeshDict", r"\(0 \$L (0|\$L)\)", r"(0 $W \1)")
+        substitute("system/blockMeshDict", r"\(\$n \$n \$n\)",
+                   f"($n {round(n*L/D)*round(box.width)} $n)")
     substitute("system/controlDict", r"^endTime .*$", f"endTime         {end_time:g};")
     substitute("system/controlDict", r"^writeInterval .*$", f"writeInterval   {end_time:g};")
     case.run("blockMesh")
@@ -222,6 +263,8 @@ def main():
     parser.add_argument("--end-time", type=float, default=80)
     parser.add_argument("--beds", default=",".join(BEDS),
                         help="comma-separated subset of " + ", ".join(BEDS))
+    parser.add_argument("--width", type=int, default=1,
+                        help="the box's width along y [m], a whole number")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16])
     args = parser.parse_args()
     chosen = args.beds.split(",")
@@ -231,7 +274,9 @@ def main():
 
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
-    packings = beds(env)
+    box = Box(args.width)
+    table, layers = RESULTS / f"{box.name}.csv", RESULTS / f"{box.name}_layers.csv"
+    packings = beds(box, env)
     for name in BEDS:
         centres, estimate = packings[name]
         print(f"{name}: {len(centres)} spheres, Ergun estimate {estimate:.5f} m^2/s^2",
@@ -239,8 +284,9 @@ def main():
     for n in args.resolutions:
         for name in (b for b in BEDS if b in chosen):
             centres, estimate = packings[name]
-            eps, drop, drift, seconds, steps = run(name, centres, n, args.end_time, env)
-            merge_row(TABLE, HEADER,
+            eps, drop, drift, seconds, steps = run(name, centres, n, args.end_time,
+                                                   box, env)
+            merge_row(table, HEADER,
                       [name, n, eps, drop, estimate, drop/estimate - 1, drift,
                        seconds, steps],
                       sort_key=lambda r: (BEDS.index(r[0]), r[1]))
@@ -248,22 +294,22 @@ def main():
                   f"Ergun {estimate:.5f} ({100*(drop/estimate - 1):+.1f}%) "
                   f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
             if name in ("parallel", "series"):
-                for row in layer_rows(name, Case(RUNS / f"anisotropic_{name}_{n}", env),
-                                      centres, args.end_time):
+                for row in layer_rows(name, Case(run_path(name, n, box), env),
+                                      centres, args.end_time, box):
                     row[1] = n
-                    merge_row(LAYERS, LAYERS_HEADER, row, key_columns=3,
+                    merge_row(layers, LAYERS_HEADER, row, key_columns=3,
                               sort_key=lambda r: (r[0], r[1], r[2]))
                     print(f"  {row[2]:4s} porosity={row[3]:.4f} u={row[4]:.5f} m/s "
                           f"dp/rho={row[5]:.5f} Ergun {row[6]:.5f} ({100*row[7]:+.1f}%)",
                           flush=True)
-    summarise()
+    summarise(box)
 
 
-def summarise():
+def summarise(box):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = stored_rows(TABLE)
+    rows = stored_rows(RESULTS / f"{box.name}.csv")
     fig, axes = plt.subplots(1, 3, figsize=(16, 4))
     series = {}
     for k, name in enumerate(BEDS):
@@ -294,7 +340,7 @@ def summarise():
     plot_speed_error(axes[2], series)
     axes[2].set_title("Difference from Ergun against wall time")
     fig.tight_layout()
-    fig.savefig(RESULTS / "anisotropicBed.png", dpi=120)
+    fig.savefig(RESULTS / f"{box.name}.png", dpi=120)
 
 
 if __name__ == "__main__":
