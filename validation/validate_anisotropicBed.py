@@ -62,20 +62,26 @@ BEDS = ["uniform36", "uniform42", "parallel", "series"]
 
 
 class Box:
-    """The periodic box: L along x and z, width along y (across the
-    parallel bed's band); names its runs and tables."""
+    """The periodic box: L along x and z, a whole number of metres wide
+    along y (across the parallel bed's band); names its runs and tables."""
 
     def __init__(self, width):
         self.width = width
         self.extent = (L, width, L)
-        self.name = "anisotropicBed" + ("" if width == 1 else f"_width{width:g}")
+        self.volume = L*width*L
+        self.name = "anisotropicBed" + ("" if width == 1 else f"_width{width}")
 
     def band(self, axis):
         return BAND[0]*self.extent[axis], BAND[1]*self.extent[axis]
 
     def cross_section(self, axis):
         """Area of the box normal to the axis."""
-        return self.extent[0]*self.extent[1]*self.extent[2]/self.extent[axis]
+        return self.volume/self.extent[axis]
+
+    def run_path(self, bed, n):
+        """The run of a bed at n cells per diameter."""
+        prefix = "anisotropic" if self.width == 1 else self.name
+        return RUNS / f"{prefix}_{bed}_{n}"
 
 
 def ergun_gradient(eps, u):
@@ -166,10 +172,9 @@ def beds(box, env):
     parallel = deplete(dense, 1, len(loose), box)
     series = deplete(dense, 0, len(loose), box)
     volume = 4/3*math.pi*RADIUS**3
-    box_volume = L*box.cross_section(0)
     return {
-        "uniform36": (dense, ergun_gradient(1 - len(dense)*volume/box_volume, U)*L),
-        "uniform42": (loose, ergun_gradient(1 - len(loose)*volume/box_volume, U)*L),
+        "uniform36": (dense, ergun_gradient(1 - len(dense)*volume/box.volume, U)*L),
+        "uniform42": (loose, ergun_gradient(1 - len(loose)*volume/box.volume, U)*L),
         "parallel": (parallel, layered_ergun(parallel, 1, False, box)*L),
         "series": (series, layered_ergun(series, 0, True, box)*L),
     }
@@ -188,7 +193,7 @@ def layer_rows(name, case, centres, end_time, box):
     n = round((len(solid)/box.width) ** (1/3))
     # blockMesh numbers the cells x fastest: index [z, y, x], so the
     # coordinate axis a is the array's axis 2 - a
-    shape = (n, round(n*box.width), n)
+    shape = (n, n*box.width, n)
     fluid = 1 - solid.reshape(shape)
     ux = case.internal_field(f"{time}/U")[:, 0].reshape(shape)
     p = case.internal_field(f"{time}/p").reshape(shape)
@@ -221,12 +226,8 @@ def layer_rows(name, case, centres, end_time, box):
     return rows
 
 
-def run_path(name, n, box):
-    return RUNS / (("anisotropic" if box.width == 1 else box.name) + f"_{name}_{n}")
-
-
 def run(name, centres, n, end_time, box, env):
-    case = Case.copy(ROOT / "tutorials" / "randomBed", run_path(name, n, box), env)
+    case = Case.copy(ROOT / "tutorials" / "randomBed", box.run_path(name, n), env)
     path = case.path
     with open(path / "constant" / "packing.dat", "w") as out:
         out.write(f"# {name}: {len(centres)} spheres\n")
@@ -241,11 +242,11 @@ def run(name, centres, n, end_time, box, env):
     substitute("system/blockMeshDict", r"^n .*$", f"n   {round(n*L/D)};")
     if box.width != 1:
         # The box W wide along y: the vertices' y and its cell count
-        substitute("system/blockMeshDict", r"^L .*$", f"L   {L:g};\nW   {box.width:g};")
+        substitute("system/blockMeshDict", r"^L .*$", f"L   {L:g};\nW   {box.width};")
         substitute("system/blockMeshDict", r"\(\$L \$L (0|\$L)\)", r"($L $W \1)")
         substitute("system/blockMeshDict", r"\(0 \$L (0|\$L)\)", r"(0 $W \1)")
         substitute("system/blockMeshDict", r"\(\$n \$n \$n\)",
-                   f"($n {round(n*L/D)*round(box.width)} $n)")
+                   f"($n {round(n*L/D)*box.width} $n)")
     substitute("system/controlDict", r"^endTime .*$", f"endTime         {end_time:g};")
     substitute("system/controlDict", r"^writeInterval .*$", f"writeInterval   {end_time:g};")
     case.run("blockMesh")
@@ -294,7 +295,7 @@ def main():
                   f"Ergun {estimate:.5f} ({100*(drop/estimate - 1):+.1f}%) "
                   f"drift={100*drift:.2f}% wall={seconds:.0f}s steps={steps}", flush=True)
             if name in ("parallel", "series"):
-                for row in layer_rows(name, Case(run_path(name, n, box), env),
+                for row in layer_rows(name, Case(box.run_path(name, n), env),
                                       centres, args.end_time, box):
                     row[1] = n
                     merge_row(layers, LAYERS_HEADER, row, key_columns=3,
