@@ -7,7 +7,7 @@ import sys
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-REFERENCE = ROOT.parent / "shared" / "reference"
+REFERENCE = ROOT / "validation" / "reference"
 RUNS = ROOT / "validation" / "runs"
 RESULTS = ROOT / "validation" / "results"
 
