@@ -51,7 +51,7 @@ class Case:
             shutil.rmtree(destination)
         shutil.copytree(source, destination, ignore=shutil.ignore_patterns(
             "log.*", "processor*", "postProcessing", "VTK", "polyMesh",
-            "[1-9]*", "0.[0-9]*"))
+            "[1-9]*", "0.[0-9]*", "*.Allrun"))
         return cls(destination, env)
 
     def run(self, *cmd, log=None, check=True, np=1):
