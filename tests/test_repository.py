@@ -159,3 +159,30 @@ def test_the_reference_data_is_in_the_repository():
         for disk in ("leading", "trailing"):
             assert len(validate_DKT.reference(figure, disk)[0]) > 20
     assert common.read_csv("ZickHomsy1982_SC_drag.csv")[1].shape == (7, 5)
+
+
+def test_the_demo_prints_what_it_computed(tmp_path):
+    """The top-level Allrun's last step, validation/plotTenCate.py, on a
+    made-up E2 run (the sphere at 0.05 m/s, the solver's log ending at
+    ClockTime = 42 s): it prints u_max, its error against the experiment's
+    0.05718 m/s, the wall time and the path of the plot it wrote."""
+    history = tmp_path / "postProcessing" / "particles" / "0"
+    history.mkdir(parents=True)
+    rows = ["# time particle x y z Ux Uy Uz ..."]
+    for i in range(11):
+        t = 0.1*i
+        rows.append(" ".join(["%g" % t, "sphere", "0.05", "0.05", "%g" % (0.1275 - 0.05*t),
+                              "0", "0", "%g" % (-0.05*min(1, 2*t))] + ["0"]*15))
+    (history / "particles.dat").write_text("\n".join(rows) + "\n")
+    (tmp_path / "log.pimpleDLMFoam").write_text(
+        "ExecutionTime = 40.1 s  ClockTime = 41 s\n\nExecutionTime = 41.2 s  ClockTime = 42 s\n\nEnd\n")
+    result = subprocess.run([sys.executable, str(ROOT / "validation" / "plotTenCate.py"),
+                             str(tmp_path), "E2"], capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    out = result.stdout
+    assert re.search(r"u_max\s+0\.05000 m/s", out), out
+    assert re.search(r"experiment\s+0\.05718 m/s: error -12\.6 %", out), out
+    assert re.search(r"wall time\s+42 s", out), out
+    png = tmp_path / "tenCate_E2.png"
+    assert png.stat().st_size > 1000
+    assert f"plot       {png}" in out, out
