@@ -218,14 +218,18 @@ def test_grid_overlap_agrees_with_the_exact_one_as_the_mesh_is_refined(tmp_path,
         assert depth == pytest.approx(depth_exact, rel=tolerance)
 
 
-def test_restart_within_a_contact_continues_the_trajectory(tmp_path, foam_env):
+@pytest.mark.parametrize("write_format", ["ascii", "binary"])
+def test_restart_within_a_contact_continues_the_trajectory(tmp_path, foam_env, write_format):
     """Stop and restart while the sphere is pressed on the floor by a
-    spinning start: the tangential spring is saved and read back."""
+    spinning start: the tangential spring is saved and read back, whatever
+    the case's writeFormat (a binary stream wrote the springs raw inside the
+    state's dictionary, which could not be read back)."""
     settings = {
         ("constant/g", "value"): "(0 0 -9.81)",
         ("system/controlDict", "endTime"): 0.01,
         ("system/controlDict", "deltaT"): 5e-4,
         ("system/controlDict", "writeInterval"): 10,
+        ("system/controlDict", "writeFormat"): write_format,
         ("constant/particleProperties", "particles/left/angularVelocity"): "(0 50 0)",
     }
     position = "(-0.005 0 0.0019998)"
@@ -379,6 +383,39 @@ def test_contact_forces_are_the_same_on_one_and_two_processors(tmp_path, foam_en
         assert np.abs(p[:, columns] - s[:, columns]).max() < 1e-6*scale
 
 
+def test_parallel_binary_restart_within_a_wet_contact(tmp_path, foam_env):
+    """The landing on 2 ranks, binary fields, with a spinning start so that
+    the contact holds a tangential spring at the restart time (0.075 s): the
+    restarted run continues as the uninterrupted one."""
+    def make(name):
+        case = landing_case(tmp_path, foam_env, name)
+        case.set("constant/particleProperties",
+                 "particles/sphere/angularVelocity", "(0 20 0)")
+        case.set("system/controlDict", "endTime", 0.1)
+        case.set("system/controlDict", "writeInterval", 15)
+        case.run("decomposePar")
+        return case
+
+    full = make("full")
+    full.run("pimpleDLMFoam", np=2)
+    state = (full.path / "processor0" / "0.075" / "uniform" / "particles").read_text()
+    springs = state[state.index("contacts"):]
+    assert "(0 -1 " in springs
+
+    stopped = make("stopped")
+    stopped.set("system/controlDict", "endTime", 0.075)
+    stopped.run("pimpleDLMFoam", np=2)
+    stopped.set("system/controlDict", "endTime", 0.1)
+    stopped.run("pimpleDLMFoam", np=2, log="pimpleDLMFoam.restart")
+
+    a = full.history()["sphere"]
+    b = stopped.history("0.075")["sphere"]
+    tail = a[a[:, 0] > 0.075 + 1e-9]
+    assert len(b) == len(tail) >= 5
+    assert np.abs(b[:, 1:10] - tail[:, 1:10]).max() < 1e-12
+    assert np.abs(b[:, 16:] - tail[:, 16:]).max() < 1e-9*np.abs(tail[:, 16:]).max()
+
+
 @pytest.mark.parametrize("interval", [0, 5])
 def test_history_interval_thins_the_history(tmp_path, foam_env, interval):
     """historyInterval N writes every N-th step (30 steps here), 0 none."""
@@ -435,3 +472,31 @@ def test_sphere_pyramid_stands_only_with_static_friction(
         assert drop.max() < 0.01*R
     else:
         assert drop[-1] > 0.2*R
+
+
+def test_adaptive_step_holds_the_courant_number_through_a_bounce(tmp_path, foam_env):
+    """A steel sphere (density 8000) falls in water onto the floor and
+    bounces (restitution 0.9), with an adjustable step at maxCo 0.5. The
+    step also holds the particle's Courant number: its surface speed,
+    doubled near a contact, plus its change over the last step (the fluid
+    meets a bounced sphere at that speed). With the flow's Courant number
+    alone the bounce took it to 0.69."""
+    case = landing_case(tmp_path, foam_env, "bounce")
+    case.set("constant/particleProperties", "particles/sphere/density", 8000)
+    case.set("constant/particleProperties", "particles/sphere/position",
+             "(0.0151 0.0149 0.025)")
+    case.set("constant/particleProperties", "contact/pairs/sphereWall/restitution", 0.9)
+    case.set("constant/particleProperties", "contact/pairs/sphereWall/impactVelocity", 0.3)
+    case.set("constant/transportProperties", "nu", 1e-6)
+    case.set("system/controlDict", "adjustTimeStep", "yes")
+    case.set("system/controlDict", "deltaT", 1e-3)
+    case.set("system/controlDict", "maxDeltaT", 0.01)
+    case.set("system/controlDict", "endTime", 0.12)
+    log = case.run("pimpleDLMFoam").log
+    h = case.history()["sphere"]
+    # It fell at over 0.4 m/s and bounced up at over 0.1 m/s
+    fall = np.argmin(h[:, 6])
+    assert h[fall, 6] < -0.4 and h[fall:, 6].max() > 0.1
+    courant = [float(line.split()[5]) for line in log.splitlines()
+               if line.startswith("Courant Number mean")]
+    assert max(courant) < 0.53

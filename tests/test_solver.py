@@ -217,3 +217,122 @@ def test_parallel_restart_continues_the_trajectory(tmp_path, foam_env):
     tail = a[a[:, 0] > 0.05 + 1e-9]
     assert len(b) == len(tail) == 10
     assert np.abs(b[:, 1:10] - tail[:, 1:10]).max() < 1e-12
+
+
+def launched_case(tmp_path, env, name, end_time, settings=None):
+    """The sphere in water without gravity, at a fixed step of 1 ms."""
+    return sphere_case(tmp_path, env, name, settings={
+        ("constant/g", "value"): "(0 0 0)",
+        ("constant/transportProperties", "nu"): 1e-6,
+        ("system/controlDict", "deltaT"): 1e-3,
+        ("system/controlDict", "endTime"): end_time,
+        ("system/controlDict", "writeInterval"): 1000,
+        **(settings or {}),
+    })
+
+
+def test_sphere_launched_through_still_fluid_keeps_its_velocity(tmp_path, foam_env):
+    """A sphere launched at 1 cm/s spinning at 2 rad/s in water at rest: the
+    fluid starts with it (rigid inside, an impulsive start's flow around),
+    so the first step keeps its velocity and spin but for the drag of a
+    millisecond (Basset's impulse, about 1.6 % here for an unconfined
+    sphere, an upper bound), and both then decay slowly. (Before, the fluid
+    inside it was at rest and the first projection stopped it.)"""
+    case = launched_case(tmp_path, foam_env, "launch", 0.005, {
+        ("constant/particleProperties", "particles/sphere/velocity"): "(0.01 0 0)",
+        ("constant/particleProperties", "particles/sphere/angularVelocity"): "(0 0 2)",
+    })
+    log = case.run("pimpleDLMFoam").log
+    assert "Starting the flow with the particles' initial velocities" in log
+    h = case.history()["sphere"]
+    assert 0.984*0.01 < h[0, 4] < 0.01
+    assert 0.984*2 < h[0, 9] < 2
+    assert np.all(np.diff(h[:, 4]) < 0) and np.all(np.diff(h[:, 9]) < 0)
+    assert h[-1, 4] > 0.95*0.01
+
+
+def test_wet_head_on_collision_is_symmetric_and_rebounds(tmp_path, foam_env):
+    """Two spheres launched at each other along z at 0.1 m/s, placed
+    symmetrically in the box: they keep their speed at the start, collide
+    through the lubrication film and part again, mirror images of each
+    other."""
+    def edit(case):
+        props = case.path / "constant" / "particleProperties"
+        props.write_text(props.read_text().replace(
+            "particles\n{", "particles\n{\n    upper { shape sphere; radius 0.005;"
+            " density 2000; position (0.0151 0.0149 0.0325);"
+            " velocity (0 0 -0.1); }") + """
+contact
+{
+    pairs
+    {
+        pair { materials (particle particle); law overlapVolume;
+               contactTime 2e-3; impactVelocity 0.1; restitution 0.9;
+               friction 0.3; }
+        wall { materials (particle wall); law overlapVolume;
+               contactTime 2e-3; impactVelocity 0.1; restitution 0.9;
+               friction 0.3; }
+    }
+}
+""")
+    case = launched_case(tmp_path, foam_env, "headOn", 0.1)
+    case.set("constant/particleProperties", "particles/sphere/position",
+             "(0.0151 0.0149 0.0125)")
+    case.set("constant/particleProperties", "particles/sphere/velocity", "(0 0 0.1)")
+    edit(case)
+    case.run("pimpleDLMFoam")
+    h = case.history()
+    lower, upper = h["sphere"], h["upper"]
+    assert lower[0, 6] > 0.99*0.1 and upper[0, 6] < -0.99*0.1
+    # Mirror images about the box's mid-height
+    assert np.abs(lower[:, 6] + upper[:, 6]).max() < 1e-6*0.1
+    assert np.abs(lower[:, 3] + upper[:, 3] - 0.045).max() < 1e-8
+    # They touched and parted
+    assert np.abs(lower[:, 18]).max() > 0
+    assert lower[-1, 6] < 0 < upper[-1, 6]
+
+
+def test_last_state_and_start_are_written_and_the_log_is_readable(tmp_path, foam_env):
+    """endTime 0.02 is not a write time (every 3 steps of 5 ms): the last
+    state is written anyway, with the particles' VTK, as is the VTK of the
+    start. The log holds a particle line per step, the progress and numbers
+    at 6 significant digits although the case writes 17."""
+    case = sphere_case(tmp_path, foam_env, "written", settings={
+        ("system/controlDict", "endTime"): 0.02,
+        ("system/controlDict", "writeInterval"): 3,
+        ("system/controlDict", "progressInterval"): 1e-9,
+    })
+    log = case.run("pimpleDLMFoam").log
+    assert case.times() == ["0", "0.015", "0.02"]
+    assert (case.path / "0.02" / "uniform" / "particles").exists()
+    vtk = case.path / "VTK" / "particles"
+    assert sorted(f.name for f in vtk.glob("*.vtk")) == [
+        "particles_0.015.vtk", "particles_0.02.vtk", "particles_0.vtk"]
+    start = (vtk / "particles_0.vtk").read_text()
+    assert "SCALARS id int 1\nLOOKUP_TABLE default\n0\n" in start
+    assert "SCALARS orientation double 4\nLOOKUP_TABLE default\n1 0 0 0\n" in start
+    assert '"particles_0.vtk", "time" : 0 }' in (vtk / "particles.vtk.series").read_text()
+
+    summaries = [line for line in log.splitlines() if line.startswith("Particles: 1, largest speed")]
+    assert len(summaries) == 4
+    assert "Progress: t = 0.02 of 0.02 (100 %)" in log
+    courant = [line for line in log.splitlines() if line.startswith("Courant Number mean")]
+    numbers = [n for line in courant for n in line.split()[3::2]]
+    assert numbers and all(len(n.replace(".", "").replace("-", "").split("e")[0].lstrip("0")) <= 6
+                           for n in numbers)
+
+
+def test_a_free_particle_reaching_a_wall_without_contacts_stops_with_an_error(tmp_path, foam_env):
+    """Without contacts it cannot go on: the run writes its state and ends
+    with an error naming the particle and pointing to 'contact' (it ended
+    with exit code 0 before)."""
+    case = sphere_case(tmp_path, foam_env, "wall", settings={
+        ("constant/particleProperties", "particles/sphere/position"): "(0.0151 0.0149 0.0085)",
+        ("constant/particleProperties", "particles/sphere/velocity"): "(0 0 -0.05)",
+    })
+    result = case.run("pimpleDLMFoam", check=False)
+    assert result.returncode != 0 and result.returncode > 0
+    assert "Particle sphere reached the cells next to a wall" in result.log
+    assert "'contact' dictionary" in result.log
+    last = case.times()[-1]
+    assert last != "0" and (case.path / last / "uniform" / "particles").exists()

@@ -24,6 +24,7 @@ Description
 #include "fvCFD.H"
 #include "dlmParticleCloud.H"
 #include "uniformDimensionedFields.H"
+#include "runProgress.H"
 #include "cpuTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -37,6 +38,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    runProgress progress(runTime);
     #include "createMesh.H"
     #include "readGravitationalAcceleration.H"
 
@@ -52,11 +54,17 @@ int main(int argc, char *argv[])
     label particleSteps = 0;
     const cpuTime timer;
 
+    if (runTime.timeIndex() == runTime.startTimeIndex())
+    {
+        particles.writeVTK();
+    }
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
     {
         ++runTime;
+        progress.update();
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
@@ -74,10 +82,23 @@ int main(int argc, char *argv[])
         }
         particles.setProjected();
         particles.move();
-        particles.writeStep();
+        particles.printSummary();
+
+        // The last step writes its state, whatever the write interval
+        const bool lastStep =
+            runTime.value()
+          > runTime.endTime().value() - 0.5*runTime.deltaTValue();
+        particles.writeStep(lastStep);
         particleSteps += particles.particles().size();
 
-        runTime.write();
+        if (lastStep)
+        {
+            runTime.writeNow();
+        }
+        else
+        {
+            runTime.write();
+        }
         runTime.printExecutionTime(Info);
     }
 

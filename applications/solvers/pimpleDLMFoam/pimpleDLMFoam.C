@@ -30,6 +30,15 @@ Description
     maxViscousNumber (system/controlDict, default 1), where the projection
     is stable.
 
+    A fresh start with moving particles (an initial velocity or angular
+    velocity) starts the fluid with them: rigid inside each particle and
+    the flow of an impulsive start around it, so that the particles keep
+    their velocity. The last step's state is always written, and a run
+    stopped by a free particle reaching a wall without contacts writes its
+    state and ends with an error. The log has a line per step on the
+    particles and, every progressInterval seconds of wall time (system/
+    controlDict, default 10), the run's progress (see runProgress).
+
     Inputs: constant/transportProperties (rho, nu of the fluid), constant/g,
     constant/particleProperties, system/fvOptions (rigidProjection), fields
     U and p_rgh.
@@ -40,6 +49,8 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "dlmParticleCloud.H"
+#include "runProgress.H"
+#include "rigidProjection.H"
 #include "cpuTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -57,11 +68,13 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    runProgress progress(runTime);
     #include "createMesh.H"
     #include "createPimpleControl.H"
     #include "createTimeControls.H"
     #include "createFields.H"
     #include "initContinuityErrs.H"
+    #include "initialParticleVelocity.H"
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
 
@@ -71,16 +84,23 @@ int main(int argc, char *argv[])
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+    if (runTime.timeIndex() == runTime.startTimeIndex())
+    {
+        particles.writeVTK();
+    }
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
     {
         #include "readTimeControls.H"
         #include "CourantNo.H"
+        #include "particleCourantNo.H"
         #include "setDeltaT.H"
         #include "viscousNumber.H"
 
         ++runTime;
+        progress.update();
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
@@ -95,26 +115,31 @@ int main(int argc, char *argv[])
         }
 
         particles.move();
+        particles.printSummary();
 
+        // The last step and a stop at a wall write their state, whatever
+        // the write interval
         const bool touching = particles.touchingBoundary();
-        if (touching)
-        {
-            Info<< nl << "A free particle reached the cells next to a wall:"
-                << " stopping, as particle-wall contact is not modelled."
-                << nl << endl;
-        }
+        const bool lastStep =
+            runTime.value()
+          > runTime.endTime().value() - 0.5*runTime.deltaTValue();
 
         const cpuTime outputTimer;
-        particles.writeStep(touching);
+        particles.writeStep(touching || lastStep);
         particles.addWorkTime(outputTimer.elapsedCpuTime());
 
-        if (touching)
+        if (touching || lastStep)
         {
-            runTime.writeAndEnd();
+            runTime.writeNow();
         }
         else
         {
             runTime.write();
+        }
+
+        if (touching)
+        {
+            particles.failAtBoundary();
         }
 
         runTime.printExecutionTime(Info);

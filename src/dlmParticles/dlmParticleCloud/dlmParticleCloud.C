@@ -123,6 +123,18 @@ void Foam::dlmParticleCloud::checkParticles()
     const fileName& source = properties_.objectPath();
     const boundBox& bounds = mesh_.bounds();
 
+    wordHashSet names(2*particles_.size());
+    for (const dlmParticle& p : particles_)
+    {
+        if (!names.insert(p.name()))
+        {
+            FatalErrorInFunction
+                << "Particle name " << p.name() << " (" << source << ") is"
+                << " used twice: each particle needs its own name"
+                << exit(FatalError);
+        }
+    }
+
     forAll(particles_, i)
     {
         dlmParticle& p = particles_[i];
@@ -265,32 +277,190 @@ void Foam::dlmParticleCloud::addPeriodicImages()
 
 void Foam::dlmParticleCloud::checkOverlaps() const
 {
-    // Without contact forces nothing would part overlapping particles
-    if (properties_.found("contact"))
-    {
-        return;
-    }
+    // Without contact forces nothing would part overlapping particles;
+    // with them an overlap beyond a few percent would part them violently
+    const scalar allowed =
+        contact_.valid() ? contact_->maxStartOverlap() : 0;
     const fileName& source = properties_.objectPath();
+
+    // Sweep along x: each particle meets those whose interval starts
+    // within its own
+    const label n = particles_.size();
+    scalarField lower(n);
     forAll(particles_, i)
     {
-        const dlmParticle& pi = particles_[i];
-        for (label j = i + 1; j < particles_.size(); ++j)
+        lower[i] =
+            particles_[i].position().x()
+          - particles_[i].shape().boundingRadius();
+    }
+    const labelList order(sortedOrder(lower));
+
+    for (label a = 0; a < n; ++a)
+    {
+        const dlmParticle& pi = particles_[order[a]];
+        const scalar Ri = pi.shape().boundingRadius();
+        const scalar upper = pi.position().x() + Ri;
+        for (label b = a + 1; b < n && lower[order[b]] <= upper; ++b)
         {
-            const dlmParticle& pj = particles_[j];
-            const scalar contactDistance =
-                pi.shape().boundingRadius() + pj.shape().boundingRadius();
-            const scalar gap =
-                mag(pi.position() - pj.position()) - contactDistance;
+            const dlmParticle& pj = particles_[order[b]];
+            const scalar Rj = pj.shape().boundingRadius();
+            const scalar depth =
+                Ri + Rj - mag(pi.position() - pj.position());
             // Touching (as in a packing) is no overlap, to round-off
-            if (gap < -1e-9*contactDistance)
+            const scalar limit =
+                max(allowed*2*min(Ri, Rj), 1e-9*(Ri + Rj));
+            if (depth > limit)
             {
                 FatalErrorInFunction
                     << "Particles " << pi.name() << " and " << pj.name()
-                    << " (" << source << ") overlap by " << -gap
-                    << " at the start" << exit(FatalError);
+                    << " (" << source << ") overlap by " << depth << " ("
+                    << 50*depth/min(Ri, Rj) << " % of the smaller diameter)"
+                    << " at the start: ";
+                if (contact_.valid())
+                {
+                    FatalError
+                        << "more than the contact laws resolve"
+                        << " (contact.maxStartOverlap " << allowed
+                        << " of the smaller diameter)";
+                }
+                else
+                {
+                    FatalError
+                        << "without contacts (a 'contact' dictionary)"
+                        << " particles must not overlap";
+                }
+                FatalError << exit(FatalError);
             }
         }
     }
+}
+
+
+Foam::scalar Foam::dlmParticleCloud::cellsPerDiameter(const label i) const
+{
+    const dlmParticle& p = particles_[i];
+    const label celli = findCell(p.position());
+    scalar h = 0;
+    if (celli >= 0)
+    {
+        h = GREAT;
+        const vector span(cellBoxes_[celli].span());
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (splitDirections_[d] > 0)
+            {
+                h = min(h, span[d]);
+            }
+        }
+    }
+    reduce(h, maxOp<scalar>());
+    return h > 0 ? 2*p.shape().boundingRadius()/h : 0;
+}
+
+
+void Foam::dlmParticleCloud::checkStart() const
+{
+    const fileName& source = properties_.objectPath();
+
+    if (touchingBoundary())
+    {
+        const dlmParticle& p = particles_[touchingBoundary_];
+        FatalErrorInFunction
+            << "Particle " << p.name() << " (" << source << ") at "
+            << p.position() << " covers cells next to a wall at the start."
+            << " Without contacts a free particle must keep off the cells"
+            << " next to the walls: move it, or add a 'contact' dictionary"
+            << " to " << source << exit(FatalError);
+    }
+
+    // The projection needs a cell centre inside each particle wherever it
+    // is: a diameter of two cells has one
+    const scalar minCellsPerDiameter = 2;
+    const bool wet = rhoFluid_.value() > 0;
+    for (label i = 0; wet && i < nParticles_; ++i)
+    {
+        const scalar nCells = cellsPerDiameter(i);
+        if (nCells < minCellsPerDiameter)
+        {
+            const dlmParticle& p = particles_[i];
+            FatalErrorInFunction
+                << "Particle " << p.name() << " (" << source << ") at "
+                << p.position() << " has a diameter of " << nCells
+                << " cells; the rigid projection needs at least "
+                << minCellsPerDiameter << " (6 or more for accuracy, see"
+                << " validation/README.md): refine the mesh or enlarge the"
+                << " particle" << exit(FatalError);
+        }
+    }
+
+    // Prescribed particles keep their velocity: find when one would reach
+    // the mesh's bounds, in the directions without periodic images
+    vector periodic(Zero);
+    for (const vector& t : periodicTranslations(mesh_))
+    {
+        periodic += cmptMag(t);
+    }
+    const Time& runTime = mesh_.time();
+    const scalar timeLeft = runTime.endTime().value() - runTime.value();
+    const boundBox& bounds = mesh_.bounds();
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        const dlmParticle& p = particles_[i];
+        if (p.motion() != dlmParticle::motionType::prescribed)
+        {
+            continue;
+        }
+        const scalar R = p.shape().boundingRadius();
+        scalar reach = GREAT;
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            const scalar v = p.velocity()[d];
+            if (splitDirections_[d] == 0 || periodic[d] > 0 || v == 0)
+            {
+                continue;
+            }
+            const scalar distance =
+                v > 0
+              ? bounds.max()[d] - (p.position()[d] + R)
+              : (p.position()[d] - R) - bounds.min()[d];
+            reach = min(reach, max(distance, scalar(0))/mag(v));
+        }
+        if (reach < timeLeft)
+        {
+            FatalErrorInFunction
+                << "Particle " << p.name() << " (" << source << ") is"
+                << " prescribed to move at " << p.velocity() << " from "
+                << p.position() << ": it reaches the mesh's bounds "
+                << bounds << " at t = " << runTime.value() + reach
+                << " (after about " << label(reach/runTime.deltaTValue())
+                << " steps of " << runTime.deltaTValue() << "), before"
+                << " endTime " << runTime.endTime().value() << "."
+                << " Shorten endTime (system/controlDict) or change the"
+                << " particle's velocity or position" << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::dlmParticleCloud::reduceTouching()
+{
+    label first = touchingBoundary_ < 0 ? labelMax : touchingBoundary_;
+    reduce(first, minOp<label>());
+    touchingBoundary_ = first == labelMax ? -1 : first;
+}
+
+
+void Foam::dlmParticleCloud::failAtBoundary() const
+{
+    const dlmParticle& p = particles_[touchingBoundary_];
+    FatalErrorInFunction
+        << "Particle " << p.name() << " reached the cells next to a wall at"
+        << " t = " << mesh_.time().value() << " (position " << p.position()
+        << ", velocity " << p.velocity() << "). Particle-wall contact is"
+        << " not modelled without a 'contact' dictionary in "
+        << properties_.objectPath() << ": add one (see README.md,"
+        << " Contacts). The state of this time has been written"
+        << exit(FatalError);
 }
 
 
@@ -358,9 +528,13 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
 
         if (f > 0)
         {
-            if (boundaryCell_[celli] && p.isFree() && !contact_.valid())
+            if
+            (
+                boundaryCell_[celli] && p.isFree() && !contact_.valid()
+             && (touchingBoundary_ < 0 || i < touchingBoundary_)
+            )
             {
-                touchingBoundary_ = true;
+                touchingBoundary_ = i;
             }
             if (f < 1 && !cellIsBox_[celli])
             {
@@ -438,7 +612,13 @@ void Foam::dlmParticleCloud::writeVTK() const
         }
 
         os  << "POINT_DATA " << n << nl
-            << "SCALARS diameter double 1" << nl
+            << "SCALARS id int 1" << nl
+            << "LOOKUP_TABLE default" << nl;
+        for (label i = 0; i < n; ++i)
+        {
+            os  << i << nl;
+        }
+        os  << "SCALARS diameter double 1" << nl
             << "LOOKUP_TABLE default" << nl;
         for (label i = 0; i < n; ++i)
         {
@@ -471,6 +651,15 @@ void Foam::dlmParticleCloud::writeVTK() const
         );
         writeVectors("force", [](const dlmParticle& p) { return p.force(); });
         writeVectors("torque", [](const dlmParticle& p) { return p.torque(); });
+
+        os  << "SCALARS orientation double 4" << nl
+            << "LOOKUP_TABLE default" << nl;
+        for (label i = 0; i < n; ++i)
+        {
+            const quaternion& q = particles_[i].orientation();
+            os  << q.w() << ' ' << q.v().x() << ' ' << q.v().y() << ' '
+                << q.v().z() << nl;
+        }
     }
 
     // ParaView time series of every particles_<time>.vtk present
@@ -547,10 +736,11 @@ Foam::dlmParticleCloud::dlmParticleCloud
     historyInterval_(properties_.getOrDefault<label>("historyInterval", 1)),
     nParticles_(0),
     cellSizeMax_(gMax(mag(mesh.delta()().primitiveField()))),
+    cellSizeMin_(gMin(mag(mesh.delta()().primitiveField()))),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
     boundaryCell_(mesh.nCells(), false),
-    touchingBoundary_(false),
+    touchingBoundary_(-1),
     follower_(nullptr),
     resolved_(!dry),
     splitDirections_(Zero),
@@ -584,7 +774,8 @@ Foam::dlmParticleCloud::dlmParticleCloud
     ),
     projected_(false),
     workTime_(0),
-    startTimeName_(mesh.time().timeName())
+    startTimeName_(mesh.time().timeName()),
+    restarted_(false)
 {
     const wordHashSet known
     ({
@@ -619,6 +810,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     if (isFile(statePath))
     {
         Info<< "Reading particle state from " << statePath << endl;
+        restarted_ = true;
         IFstream is(statePath);
         state.read(is);
         readParticles(state.subDict("particles"));
@@ -667,7 +859,6 @@ Foam::dlmParticleCloud::dlmParticleCloud
 
     checkParticles();
     addPeriodicImages();
-    checkOverlaps();
 
     if (properties_.found("contact"))
     {
@@ -679,6 +870,12 @@ Foam::dlmParticleCloud::dlmParticleCloud
         }
     }
 
+    checkOverlaps();
+    if (contact_.valid())
+    {
+        contact_->checkWalls();
+    }
+
     cells_.setSize(particles_.size());
     fractions_.setSize(particles_.size());
     nearCells_.setSize(particles_.size());
@@ -688,14 +885,29 @@ Foam::dlmParticleCloud::dlmParticleCloud
         {
             updateFractions(i);
         }
+        reduceTouching();
         updateFields();
     }
+    checkStart();
 
     Info<< "Particles: " << nParticles_ << endl;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::dlmParticleCloud::moving() const
+{
+    for (const dlmParticle& p : particles_)
+    {
+        if (magSqr(p.velocity()) > 0 || magSqr(p.angularVelocity()) > 0)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
 
 void Foam::dlmParticleCloud::setProjected()
 {
@@ -731,7 +943,17 @@ void Foam::dlmParticleCloud::move()
 
     const scalar deltaT = mesh_.time().deltaTValue();
 
-    touchingBoundary_ = false;
+    // Each particle's velocities at the start of the step, for the step's
+    // change of its surface speed
+    vectorField startVelocity(particles_.size());
+    vectorField startOmega(particles_.size());
+    forAll(particles_, i)
+    {
+        startVelocity[i] = particles_[i].velocity0();
+        startOmega[i] = particles_[i].angularVelocity0();
+    }
+
+    touchingBoundary_ = -1;
     if (contact_.valid())
     {
         // The projected motion holds the last step's mean contact loads,
@@ -801,8 +1023,18 @@ void Foam::dlmParticleCloud::move()
                 updateFractions(i);
             }
         }
-        reduce(touchingBoundary_, orOp<bool>());
+        reduceTouching();
         updateFields();
+    }
+
+    speedChange_.setSize(particles_.size());
+    forAll(particles_, i)
+    {
+        const dlmParticle& p = particles_[i];
+        speedChange_[i] =
+            mag(p.velocity() - startVelocity[i])
+          + mag(p.angularVelocity() - startOmega[i])
+           *p.shape().boundingRadius();
     }
 
     workTime_ += timer.elapsedCpuTime();
@@ -860,6 +1092,78 @@ void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
     {
         writeVTK();
     }
+}
+
+
+void Foam::dlmParticleCloud::printSummary() const
+{
+    Info<< "Particles: " << nParticles_ << ", largest speed "
+        << maxSurfaceSpeed() << " m/s";
+    if (contact_.valid())
+    {
+        Info<< ", largest overlap "
+            << 100*contact_->maxOverlapRatio() << " % of d, "
+            << contact_->maxTouching() << " contacts, "
+            << contact_->nSubSteps() << " sub-steps";
+    }
+    Info<< endl;
+}
+
+
+Foam::scalar Foam::dlmParticleCloud::maxSurfaceSpeed() const
+{
+    scalar speed = 0;
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        const dlmParticle& p = particles_[i];
+        speed = max
+        (
+            speed,
+            mag(p.velocity())
+          + mag(p.angularVelocity())*p.shape().boundingRadius()
+        );
+    }
+    return speed;
+}
+
+
+Foam::scalar Foam::dlmParticleCloud::courantNumber(const scalar deltaT) const
+{
+    scalar speed = 0;
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        const dlmParticle& p = particles_[i];
+        if (!p.isFree())
+        {
+            continue;
+        }
+        const scalar R = p.shape().boundingRadius();
+        const scalar surfaceSpeed =
+            mag(p.velocity()) + mag(p.angularVelocity())*R;
+        // The fluid around lags a sudden change of the particle's motion
+        // (a bounce): it meets the particle at the change's speed
+        const scalar change =
+            i < speedChange_.size() ? speedChange_[i] : 0;
+        const bool mayBounce = contact_.valid() && contact_->nearContact(i);
+        speed = max
+        (
+            speed,
+            (mayBounce ? 2*surfaceSpeed : surfaceSpeed) + change
+        );
+    }
+    return speed*deltaT/cellSizeMin_;
+}
+
+
+bool Foam::dlmParticleCloud::writeObject
+(
+    IOstream::streamFormat,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp,
+    const bool valid
+) const
+{
+    return regIOobject::writeObject(IOstream::ASCII, ver, cmp, valid);
 }
 
 

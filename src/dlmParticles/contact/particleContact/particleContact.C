@@ -503,6 +503,7 @@ void Foam::particleContact::applyContact
     vector relative(-(velocity_[i] + (omega_[i] ^ ri)));
     scalar invMass = inverseMass(i);
     scalar radius = Ri;
+    scalar smallerRadius = Ri;
     vector rj(Zero);
     if (j >= 0)
     {
@@ -511,7 +512,9 @@ void Foam::particleContact::applyContact
         relative += velocity_[j] + (omega_[j] ^ rj);
         invMass += inverseMass(j);
         radius = Ri*Rj/(Ri + Rj);
+        smallerRadius = min(Ri, Rj);
     }
+    maxOverlapRatio_ = max(maxOverlapRatio_, 0.5*depth/smallerRadius);
     const scalar mass = 1/invMass;
 
     // relative: velocity of j (or the wall) seen from i; normal from i to j
@@ -765,12 +768,16 @@ Foam::particleContact::particleContact
     correctionStep_(0),
     lastSubStep_(0),
     activeStep_(GREAT),
-    nActive_(0)
+    nActive_(0),
+    maxTouching_(0),
+    nSubSteps_(0),
+    maxOverlapRatio_(0),
+    maxStartOverlap_(dict.getOrDefault<scalar>("maxStartOverlap", 0.05))
 {
     const wordHashSet known
     ({
         "active", "overlap", "stepsPerContact", "meshWalls", "pairs", "walls",
-        "lubrication"
+        "lubrication", "maxStartOverlap"
     });
     for (const entry& e : dict)
     {
@@ -781,6 +788,12 @@ Foam::particleContact::particleContact
                 << " settings. Known keywords: "
                 << flatOutput(known.sortedToc()) << exit(FatalIOError);
         }
+    }
+    if (maxStartOverlap_ < 0 || maxStartOverlap_ >= 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "maxStartOverlap " << maxStartOverlap_ << " must be in [0, 1)"
+            << " (a fraction of the smaller diameter)" << exit(FatalIOError);
     }
     if (stepsPerContact_ < 4)
     {
@@ -876,6 +889,7 @@ void Foam::particleContact::evolve
     PtrList<dlmParticle>& particles = cloud_.particles();
     const label n = particles.size();
 
+    maxOverlapRatio_ = 0;
     gatherConstants();
     findCandidates(deltaT, accel);
 
@@ -1067,10 +1081,57 @@ void Foam::particleContact::evolve
         }
     }
 
+    maxTouching_ = maxActive;
+    nSubSteps_ = nSub;
+
     Info<< "Contacts: " << pairs_.size() << " particle pairs and "
         << wallCandidates_.size() << " particle-wall candidates, up to "
         << maxActive << " touching; " << nSub << " sub-steps, smallest "
         << hMin << " s" << endl;
+}
+
+
+void Foam::particleContact::checkWalls() const
+{
+    DynamicList<label> features;
+    DynamicList<wallContact> found;
+    for (const dlmParticle& p : cloud_.particles())
+    {
+        if (!p.isFree())
+        {
+            continue;
+        }
+        const point& X = p.position();
+        const scalar R = p.shape().boundingRadius();
+        for (const contactWall& wall : walls_)
+        {
+            features.clear();
+            found.clear();
+            wall.near(X, R, features);
+            wall.contacts(X, R, features, found);
+            for (const wallContact& c : found)
+            {
+                const scalar depth = R - c.distance;
+                if (c.distance < 0 || depth > maxStartOverlap_*2*R)
+                {
+                    FatalIOErrorInFunction(dict_)
+                        << "Particle " << p.name() << " at " << X
+                        << " (diameter " << 2*R << ") "
+                        << (
+                               c.distance < 0
+                             ? "has its centre beyond wall "
+                             : "overlaps wall "
+                           )
+                        << wall.name() << " by " << depth << " ("
+                        << 50*depth/R << " % of its diameter) at the start,"
+                        << " more than the contact laws resolve"
+                        << " (maxStartOverlap " << maxStartOverlap_
+                        << " of the diameter). Move the particle clear of"
+                        << " the wall" << exit(FatalIOError);
+                }
+            }
+        }
+    }
 }
 
 

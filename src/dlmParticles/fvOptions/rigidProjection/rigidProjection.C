@@ -1391,23 +1391,65 @@ void Foam::fv::rigidProjection::followParticles()
 }
 
 
-void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
+void Foam::fv::rigidProjection::holdRigid
+(
+    volVectorField& U,
+    scalarField& held
+)
 {
-    dlmParticleCloud& cloud =
-        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
-    PtrList<dlmParticle>& particles = cloud.particles();
-
-    const vectorField& C = mesh_.C();
-    const scalarField& V = mesh_.V();
-    const scalarField& rho = cloud.rho();
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const PtrList<dlmParticle>& particles = cloud.particles();
     vectorField& u = U.primitiveFieldRef();
-    vectorField& f = force_.primitiveFieldRef();
+    held = 0;
 
-    const vector gravity(this->gravity());
-    const scalar rhoFluid = cloud.rhoFluid().value();
-    const scalar deltaT = mesh_.time().deltaTValue();
-    const scalar ddtRate = this->ddtRate(U);
-    const bool twoD = cloud.twoD();
+    if (mixedCells_ == mixedCellsType::interpolated)
+    {
+        updateRegions();
+        const List<vectorField> sampled(sampledVelocities(U));
+        forAll(particles, i)
+        {
+            const dlmParticle& p = particles[i];
+            const DynamicList<label>& cells = regionCells_[i];
+            forAll(cells, k)
+            {
+                u[cells[k]] =
+                    regionWeights_[i][k]*p.velocity()
+                  + (p.angularVelocity() ^ regionArms_[i][k])
+                  + sampled[i][k];
+                held[cells[k]] = 1;
+            }
+        }
+    }
+    else
+    {
+        const vectorField& C = mesh_.C();
+        forAll(particles, i)
+        {
+            const dlmParticle& p = particles[i];
+            const DynamicList<label>& cells = cloud.cells(i);
+            const DynamicList<scalar>& fractions = cloud.fractions(i);
+            forAll(cells, k)
+            {
+                const label celli = cells[k];
+                const vector us
+                (
+                    p.velocity()
+                  + (p.angularVelocity() ^ (C[celli] - p.position()))
+                );
+                u[celli] += fractions[k]*(us - u[celli]);
+                held[celli] = max(held[celli], fractions[k]);
+            }
+        }
+    }
+    U.correctBoundaryConditions();
+}
+
+
+Foam::List<Foam::vectorField>
+Foam::fv::rigidProjection::sampledVelocities(const volVectorField& U) const
+{
+    const vectorField& u = U.primitiveField();
 
     // Values across coupled faces, fetched once per patch
     PtrList<vectorField> neighbourValues(mesh_.boundary().size());
@@ -1471,8 +1513,39 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         return sum;
     };
 
+    List<vectorField> sampled(regionCells_.size());
+    forAll(sampled, i)
+    {
+        sampled[i].setSize(regionCells_[i].size());
+        forAll(sampled[i], k)
+        {
+            sampled[i][k] = sampledVelocity(i, k);
+        }
+    }
+    return sampled;
+}
+
+
+void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
+{
+    dlmParticleCloud& cloud =
+        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
+    PtrList<dlmParticle>& particles = cloud.particles();
+
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const scalarField& rho = cloud.rho();
+    vectorField& u = U.primitiveFieldRef();
+    vectorField& f = force_.primitiveFieldRef();
+
+    const vector gravity(this->gravity());
+    const scalar rhoFluid = cloud.rhoFluid().value();
+    const scalar deltaT = mesh_.time().deltaTValue();
+    const scalar ddtRate = this->ddtRate(U);
+    const bool twoD = cloud.twoD();
+
     // Velocity of the samples of each forced cell
-    List<vectorField> sampled(particles.size());
+    const List<vectorField> sampled(sampledVelocities(U));
 
     // Target velocity of forced cell k of particle i for rigid motion
     // (Up, omega)
@@ -1497,13 +1570,11 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         scalar* s = &sums[nVelocitySums*i];
 
         const DynamicList<label>& cells = regionCells_[i];
-        sampled[i].setSize(cells.size());
         forAll(cells, k)
         {
             const label celli = cells[k];
             const scalar m = rho[celli]*V[celli];
             const vector r(C[celli] - X);
-            sampled[i][k] = sampledVelocity(i, k);
             const vector d(u[celli] - sampled[i][k]);
             const vector& f = heldForce_[celli];
 
