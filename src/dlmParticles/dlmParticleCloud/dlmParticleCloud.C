@@ -42,6 +42,52 @@ void Foam::dlmParticleCloud::readParticles(const dictionary& particlesDict)
 }
 
 
+void Foam::dlmParticleCloud::checkRepeatedNames() const
+{
+    // A dictionary keeps one entry of a repeated keyword (the last merged
+    // into the first): scan the file's 'particles' block for repeats
+    IFstream is(properties_.objectPath());
+    label depth = 0;
+    label particlesDepth = -1;
+    bool particlesNext = false;
+    wordHashSet names;
+    word last;
+    token t;
+    while (is.read(t).good())
+    {
+        if (t == token::BEGIN_BLOCK)
+        {
+            ++depth;
+            if (particlesNext)
+            {
+                particlesDepth = depth;
+            }
+            else if (depth == particlesDepth + 1 && particlesDepth > 0)
+            {
+                if (!names.insert(last))
+                {
+                    FatalIOErrorInFunction(properties_)
+                        << "Particle " << last << " is listed twice in"
+                        << " 'particles' (line " << is.lineNumber() << "):"
+                        << " each particle needs its own name"
+                        << exit(FatalIOError);
+                }
+            }
+        }
+        else if (t == token::END_BLOCK)
+        {
+            if (depth == particlesDepth)
+            {
+                particlesDepth = -1;
+            }
+            --depth;
+        }
+        particlesNext = depth == 0 && t.isWord() && t.wordToken() == "particles";
+        last = t.isWord() ? t.wordToken() : word::null;
+    }
+}
+
+
 void Foam::dlmParticleCloud::readParticleFile()
 {
     fileName file;
@@ -819,6 +865,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     {
         if (properties_.found("particles"))
         {
+            checkRepeatedNames();
             readParticles(properties_.subDict("particles"));
         }
         readParticleFile();

@@ -16,6 +16,8 @@ Foam::runProgress::runProgress(const Time& runTime)
     lastReport_(0)
 {
     Sout.precision(logPrecision);
+    static_cast<OSstream&>(FatalError).precision(logPrecision);
+    static_cast<OSstream&>(FatalIOError).precision(logPrecision);
 }
 
 
