@@ -37,6 +37,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    #include "checkDeltaT.H"
     #include "createMesh.H"
     #include "readGravitationalAcceleration.H"
 

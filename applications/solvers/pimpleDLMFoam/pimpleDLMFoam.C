@@ -60,6 +60,18 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createPimpleControl.H"
     #include "createTimeControls.H"
+    #include "checkDeltaT.H"
+
+    // The adjusted step scales with maxCo and is bounded by maxDeltaT: a
+    // value that is not positive sets it to zero or below
+    if (adjustTimeStep && min(maxCo, maxDeltaT) <= 0)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << (maxCo <= 0 ? "maxCo " : "maxDeltaT ")
+            << (maxCo <= 0 ? maxCo : maxDeltaT) << " must be positive with"
+            << " adjustTimeStep yes" << exit(FatalIOError);
+    }
+
     #include "createFields.H"
     #include "initContinuityErrs.H"
     #include "CourantNo.H"
