@@ -14,6 +14,7 @@
 #include "cpuTime.H"
 #include "syncTools.H"
 #include "fvcFlux.H"
+#include "HashSet.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -194,6 +195,45 @@ namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fv::rigidProjection::checkKeywords(const dictionary& dict) const
+{
+    const auto check = [this](const dictionary& d, const wordHashSet& known)
+    {
+        for (const entry& e : d)
+        {
+            if (!known.found(e.keyword()))
+            {
+                FatalIOErrorInFunction(d)
+                    << "Unknown keyword '" << e.keyword() << "' for fvOption "
+                    << name_ << " (type " << modelType_ << ")." << nl
+                    << "Known keywords: " << flatOutput(known.sortedToc())
+                    << exit(FatalIOError);
+            }
+        }
+    };
+
+    // fv::option reads type, libs, active, log and the optional
+    // <type>Coeffs sub-dictionary, which then holds the projection's own
+    const wordHashSet own
+    ({
+        "mixedCells", "forceRelaxation", "implicitHold", "gapBlending"
+    });
+    const word coeffsName(modelType_ + "Coeffs");
+    wordHashSet known({"type", "libs", "active", "log", coeffsName});
+
+    const dictionary* coeffsPtr = dict.findDict(coeffsName);
+    if (coeffsPtr)
+    {
+        check(*coeffsPtr, own);
+    }
+    else
+    {
+        known += own;
+    }
+    check(dict, known);
+}
+
 
 Foam::vector Foam::fv::rigidProjection::gravity() const
 {
@@ -1162,6 +1202,7 @@ bool Foam::fv::rigidProjection::read(const dictionary& dict)
 {
     if (option::read(dict))
     {
+        checkKeywords(dict);
         mixedCells_ = mixedCellsTypeNames.getOrDefault
         (
             "mixedCells",
