@@ -40,6 +40,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "dlmParticleCloud.H"
+#include "centreDistances.H"
 #include "cpuTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -78,7 +79,7 @@ int main(int argc, char *argv[])
     #include "setInitialDeltaT.H"
 
     // Smallest squared distance between neighbouring cell centres
-    const scalar minDeltaSqr = gMin(magSqr(mesh.delta()().primitiveField()));
+    const scalar minDeltaSqr = sqr(gMin(centreDistances(mesh)));
     #include "viscousNumber.H"
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

@@ -15,6 +15,7 @@
 #include "OSspecific.H"
 #include "emptyPolyPatch.H"
 #include "cyclicPolyPatch.H"
+#include "centreDistances.H"
 #include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -546,7 +547,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     ),
     historyInterval_(properties_.getOrDefault<label>("historyInterval", 1)),
     nParticles_(0),
-    cellSizeMax_(gMax(mag(mesh.delta()().primitiveField()))),
+    cellSizeMax_(gMax(centreDistances(mesh))),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
     boundaryCell_(mesh.nCells(), false),
