@@ -262,7 +262,8 @@ def test_bad_input(meshed, tmp_path, bad):
         edit(case)
     if bad.np > 1:
         case.run("decomposePar")
-    result = case.run(bad.solver, check=False, np=bad.np)
+    # A run that never ends (deltaT 0 did in dlmDEMFoam) fails too
+    result = case.run(bad.solver, check=False, np=bad.np, timeout=120)
     log = result.log
     assert result.returncode > 0, \
         f"exit code {result.returncode} (bad input accepted or a signal):\n{log[-2000:]}"
