@@ -54,8 +54,9 @@ class Case:
             "[1-9]*", "0.[0-9]*", "*.Allrun"))
         return cls(destination, env)
 
-    def run(self, *cmd, log=None, check=True, np=1):
-        """Run a command in the case, output to log.<name>; np > 1: mpirun."""
+    def run(self, *cmd, log=None, check=True, np=1, timeout=None):
+        """Run a command in the case, output to log.<name>; np > 1: mpirun;
+        timeout: seconds, after which it is killed (subprocess.TimeoutExpired)."""
         cmd = [str(c) for c in cmd]
         if np > 1:
             cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe",
@@ -65,7 +66,8 @@ class Case:
         with open(logfile, "w") as out:
             result = subprocess.run(cmd, cwd=self.path,
                                     env=dict(self.env, PWD=str(self.path)),
-                                    stdout=out, stderr=subprocess.STDOUT)
+                                    stdout=out, stderr=subprocess.STDOUT,
+                                    timeout=timeout)
         if check and result.returncode != 0:
             tail = logfile.read_text()[-3000:]
             raise RuntimeError(f"{' '.join(cmd)} failed in {self.path}:\n{tail}")

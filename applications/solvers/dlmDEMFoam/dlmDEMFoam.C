@@ -39,6 +39,7 @@ int main(int argc, char *argv[])
     #include "setRootCaseLists.H"
     #include "createTime.H"
     runProgress progress(runTime);
+    #include "checkDeltaT.H"
     #include "createMesh.H"
     #include "readGravitationalAcceleration.H"
 

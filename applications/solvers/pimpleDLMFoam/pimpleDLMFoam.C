@@ -51,6 +51,7 @@ Description
 #include "dlmParticleCloud.H"
 #include "runProgress.H"
 #include "rigidProjection.H"
+#include "centreDistances.H"
 #include "cpuTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -72,6 +73,18 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createPimpleControl.H"
     #include "createTimeControls.H"
+    #include "checkDeltaT.H"
+
+    // The adjusted step scales with maxCo and is bounded by maxDeltaT: a
+    // value that is not positive sets it to zero or below
+    if (adjustTimeStep && min(maxCo, maxDeltaT) <= 0)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << (maxCo <= 0 ? "maxCo " : "maxDeltaT ")
+            << (maxCo <= 0 ? maxCo : maxDeltaT) << " must be positive with"
+            << " adjustTimeStep yes" << exit(FatalIOError);
+    }
+
     #include "createFields.H"
     #include "initContinuityErrs.H"
     #include "initialParticleVelocity.H"
@@ -79,7 +92,7 @@ int main(int argc, char *argv[])
     #include "setInitialDeltaT.H"
 
     // Smallest squared distance between neighbouring cell centres
-    const scalar minDeltaSqr = gMin(magSqr(mesh.delta()().primitiveField()));
+    const scalar minDeltaSqr = sqr(gMin(centreDistances(mesh)));
     #include "viscousNumber.H"
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

@@ -370,6 +370,9 @@ TEST_CASE("particle input is checked", "[geometry]")
     CHECK_THROWS(particle("shape sphere; radus 0.1; density 2; position (0 0 0);"));
     CHECK_THROWS(particle("shape cube; radius 0.1; density 2; position (0 0 0);"));
     CHECK_THROWS(particle("shape sphere; radius 0.1; density 2; position (0 0 0); motion flying;"));
+    CHECK_THROWS(particle("shape sphere; radius 0.1; density 2; position (0 0 0); orientation (0 (0 0 0));"));
+    CHECK_THROWS(particle("shape sphere; radius 0.1; density 2; position (0 0 0); motion prescribed;"));
+    CHECK_NOTHROW(particle("shape sphere; radius 0.1; density 2; position (0 0 0); motion prescribed; angularVelocity (0 0 1);"));
 
     const dlmParticle fixed
     (

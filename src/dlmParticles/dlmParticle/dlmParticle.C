@@ -79,6 +79,32 @@ Foam::dlmParticle::dlmParticle(const dictionary& dict)
             << " must be positive" << exit(FatalIOError);
     }
 
+    // Without either, a prescribed particle would silently stay at rest
+    if
+    (
+        motion_ == motionType::prescribed
+     && !dict.found("velocity")
+     && !dict.found("angularVelocity")
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Particle " << name_ << " has motion prescribed but neither"
+            << " 'velocity' nor 'angularVelocity': a prescribed particle"
+            << " moves with the velocity and angular velocity it is given."
+            << nl << "Give either or both, or use motion fixed for a"
+            << " particle held at rest." << exit(FatalIOError);
+    }
+
+    if (mag(orientation_) < VSMALL)
+    {
+        FatalIOErrorInFunction(dict)
+            << "orientation " << orientation_ << " of particle " << name_
+            << " is the zero quaternion, which is no rotation." << nl
+            << "Give a non-zero quaternion (w (x y z)), normalised on"
+            << " reading: (1 (0 0 0)) for none, (0.7071 (0 0 0.7071)) for"
+            << " 90 degrees about z." << exit(FatalIOError);
+    }
+
     if (motion_ == motionType::fixed)
     {
         velocity_ = Zero;

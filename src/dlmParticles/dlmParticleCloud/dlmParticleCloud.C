@@ -15,6 +15,7 @@
 #include "OSspecific.H"
 #include "emptyPolyPatch.H"
 #include "cyclicPolyPatch.H"
+#include "centreDistances.H"
 #include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -46,7 +47,11 @@ void Foam::dlmParticleCloud::checkRepeatedNames() const
 {
     // A dictionary keeps one entry of a repeated keyword (the last merged
     // into the first): scan the file's 'particles' block for repeats
-    IFstream is(properties_.objectPath());
+    IFstream is(properties_.filePath());
+    if (!is.good())
+    {
+        return;
+    }
     label depth = 0;
     label particlesDepth = -1;
     bool particlesNext = false;
@@ -166,7 +171,7 @@ void Foam::dlmParticleCloud::readParticleFile()
 
 void Foam::dlmParticleCloud::checkParticles()
 {
-    const fileName& source = properties_.objectPath();
+    const fileName source(properties_.filePath());
     const boundBox& bounds = mesh_.bounds();
 
     wordHashSet names(2*particles_.size());
@@ -299,7 +304,7 @@ void Foam::dlmParticleCloud::addPeriodicImages()
             {
                 FatalErrorInFunction
                     << "Particle " << p.name() << " ("
-                    << properties_.objectPath() << ") crosses a periodic"
+                    << properties_.filePath() << ") crosses a periodic"
                     << " boundary: only fixed and prescribed particles may"
                     << " (their periodic images are added); free particles"
                     << " must stay clear of periodic boundaries"
@@ -327,7 +332,7 @@ void Foam::dlmParticleCloud::checkOverlaps() const
     // with them an overlap beyond a few percent would part them violently
     const scalar allowed =
         contact_.valid() ? contact_->maxStartOverlap() : 0;
-    const fileName& source = properties_.objectPath();
+    const fileName source(properties_.filePath());
 
     // Sweep along x: each particle meets those whose interval starts
     // within its own
@@ -406,7 +411,7 @@ Foam::scalar Foam::dlmParticleCloud::cellsPerDiameter(const label i) const
 
 void Foam::dlmParticleCloud::checkStart() const
 {
-    const fileName& source = properties_.objectPath();
+    const fileName source(properties_.filePath());
 
     if (touchingBoundary())
     {
@@ -504,7 +509,7 @@ void Foam::dlmParticleCloud::failAtBoundary() const
         << " t = " << mesh_.time().value() << " (position " << p.position()
         << ", velocity " << p.velocity() << "). Particle-wall contact is"
         << " not modelled without a 'contact' dictionary in "
-        << properties_.objectPath() << ": add one (see README.md,"
+        << properties_.filePath() << ": add one (see README.md,"
         << " Contacts). The state of this time has been written"
         << exit(FatalError);
 }
@@ -781,8 +786,8 @@ Foam::dlmParticleCloud::dlmParticleCloud
     ),
     historyInterval_(properties_.getOrDefault<label>("historyInterval", 1)),
     nParticles_(0),
-    cellSizeMax_(gMax(mag(mesh.delta()().primitiveField()))),
-    cellSizeMin_(gMin(mag(mesh.delta()().primitiveField()))),
+    cellSizeMax_(gMax(centreDistances(mesh))),
+    cellSizeMin_(gMin(centreDistances(mesh))),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
     boundaryCell_(mesh.nCells(), false),

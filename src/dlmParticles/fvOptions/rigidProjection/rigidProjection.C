@@ -14,6 +14,9 @@
 #include "cpuTime.H"
 #include "syncTools.H"
 #include "fvcFlux.H"
+#include "HashSet.H"
+#include "OStringStream.H"
+#include "IOmanip.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -194,6 +197,112 @@ namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fv::rigidProjection::checkKeywords(const dictionary& dict) const
+{
+    const auto check = [this](const dictionary& d, const wordHashSet& known)
+    {
+        for (const entry& e : d)
+        {
+            if (!known.found(e.keyword()))
+            {
+                FatalIOErrorInFunction(d)
+                    << "Unknown keyword '" << e.keyword() << "' for fvOption "
+                    << name_ << " (type " << modelType_ << ")." << nl
+                    << "Known keywords: " << flatOutput(known.sortedToc())
+                    << exit(FatalIOError);
+            }
+        }
+    };
+
+    // fv::option reads type, libs, active, log and the optional
+    // <type>Coeffs sub-dictionary, which then holds the projection's own
+    const wordHashSet own
+    ({
+        "mixedCells", "forceRelaxation", "implicitHold", "gapBlending"
+    });
+    const word coeffsName(modelType_ + "Coeffs");
+    wordHashSet known({"type", "libs", "active", "log", coeffsName});
+
+    const dictionary* coeffsPtr = dict.findDict(coeffsName);
+    if (coeffsPtr)
+    {
+        check(*coeffsPtr, own);
+    }
+    else
+    {
+        known += own;
+    }
+    check(dict, known);
+}
+
+
+void Foam::fv::rigidProjection::failUncovered
+(
+    const dlmParticle& p,
+    const word& what
+) const
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const point& X = p.position();
+
+    // The size of the cell that holds the centre, on the processor that has
+    // it; -1 if none does
+    scalar h = -1;
+    const label celli = mesh_.findCell(X);
+    if (celli >= 0)
+    {
+        const vector span(cloud.cellBoxes()[celli].span());
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (mesh_.solutionD()[d] == 1)
+            {
+                h = max(h, span[d]);
+            }
+        }
+    }
+    reduce(h, maxOp<scalar>());
+    const bool outside = h < 0;
+    if (outside)
+    {
+        h = cloud.cellSizeMax();
+    }
+
+    const scalar D = 2*p.shape().boundingRadius();
+    const scalar speed = mag(p.velocity());
+    const scalar minCells = Foam::sqrt(scalar(p.shape().nDimensions()));
+
+    OStringStream cause;
+    cause.precision(4);
+    if (outside)
+    {
+        cause
+            << "Its centre is outside the mesh " << mesh_.bounds()
+            << ": it left the mesh. A particle leaves the mesh when an"
+            << " overlap throws it out, at an absurd velocity, or where no"
+            << " wall holds it (meshWalls false): check the particles'"
+            << " overlaps, velocities and walls (constant/particleProperties)"
+            << " and gravity (constant/g).";
+    }
+    else
+    {
+        cause
+            << "It is under-resolved: below " << minCells << " cells per"
+            << " diameter a particle may hold no cell centre, and the method"
+            << " needs several. Refine the mesh or enlarge the particle"
+            << " (constant/particleProperties).";
+    }
+
+    FatalErrorInFunction
+        << setprecision(4)
+        << "Particle " << p.name() << " covers no " << what.c_str()
+        << ": centre " << X << ", diameter " << D << " = " << D/h
+        << " cells of " << h << ", speed " << speed << " ("
+        << speed*mesh_.time().deltaTValue()/h << " cells per step)." << nl
+        << cause.str().c_str() << exit(FatalError);
+}
+
 
 Foam::vector Foam::fv::rigidProjection::gravity() const
 {
@@ -1162,6 +1271,7 @@ bool Foam::fv::rigidProjection::read(const dictionary& dict)
 {
     if (option::read(dict))
     {
+        checkKeywords(dict);
         mixedCells_ = mixedCellsTypeNames.getOrDefault
         (
             "mixedCells",
@@ -1616,9 +1726,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         // say) may force no cell; a free one could not move
         if (g[gA11] <= 0 && p.isFree())
         {
-            FatalErrorInFunction
-                << "Particle " << p.name() << " covers no cell centre"
-                << exit(FatalError);
+            failUncovered(p, "cell centre");
         }
 
         const tensor A11(g[gA11]*tensor::I);
@@ -1766,9 +1874,7 @@ void Foam::fv::rigidProjection::correctBlended(volVectorField& U)
 
         if (M <= 0)
         {
-            FatalErrorInFunction
-                << "Particle " << p.name() << " covers no cell volume"
-                << exit(FatalError);
+            failUncovered(p, "cell volume");
         }
 
         // Discrete centroid, momentum, and moments about the centroid

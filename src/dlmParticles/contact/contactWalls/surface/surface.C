@@ -128,8 +128,41 @@ Foam::contactWalls::surface::surface
             << exit(FatalIOError);
     }
     const scalar scale = dict.getOrDefault<scalar>("scale", 1);
+    if (scale <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "scale " << scale << " of wall " << name()
+            << " must be positive" << exit(FatalIOError);
+    }
 
-    setSurface(autoPtr<triSurface>::New(file, scale));
+    // The readers' own errors name neither the file nor the wall (a corrupt
+    // STL: "while reading vertex on line 5"): catch them and say both
+    autoPtr<triSurface> surf;
+    const bool throwing = FatalError.throwExceptions();
+    const bool throwingIO = FatalIOError.throwExceptions();
+    try
+    {
+        surf.reset(new triSurface(file, scale));
+    }
+    catch (const Foam::error& err)
+    {
+        FatalError.throwExceptions(throwing);
+        FatalIOError.throwExceptions(throwingIO);
+        FatalIOErrorInFunction(dict)
+            << "Wall " << name() << ": cannot read the surface file " << file
+            << nl << "    " << err.message().c_str() << exit(FatalIOError);
+    }
+    FatalError.throwExceptions(throwing);
+    FatalIOError.throwExceptions(throwingIO);
+
+    if (surf->empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Wall " << name() << ": the surface file " << file
+            << " holds no faces" << exit(FatalIOError);
+    }
+
+    setSurface(std::move(surf));
     Info<< "Contact wall " << name() << ": " << surface_->size()
         << " faces from " << file << endl;
 }
