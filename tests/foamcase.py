@@ -45,13 +45,18 @@ class Case:
         self.env = env if env is not None else foam_environment()
 
     @classmethod
-    def copy(cls, source, destination, env=None):
+    def copy(cls, source, destination, env=None, parameters=False):
+        """A copy of the case without run outputs; parameters: keep the
+        *.Allrun files of a tutorial's Allrun (the settings it ran with),
+        else the case's own defaults."""
         destination = pathlib.Path(destination)
         if destination.exists():
             shutil.rmtree(destination)
-        shutil.copytree(source, destination, ignore=shutil.ignore_patterns(
-            "log.*", "processor*", "postProcessing", "VTK", "polyMesh",
-            "[1-9]*", "0.[0-9]*", "*.Allrun"))
+        ignored = ["log.*", "processor*", "postProcessing", "VTK", "polyMesh",
+                   "[1-9]*", "0.[0-9]*"]
+        if not parameters:
+            ignored.append("*.Allrun")
+        shutil.copytree(source, destination, ignore=shutil.ignore_patterns(*ignored))
         return cls(destination, env)
 
     def run(self, *cmd, log=None, check=True, np=1, timeout=None):

@@ -53,7 +53,7 @@ def test_sphere_across_periodic_boundaries_sees_the_flow_of_the_centred_one(
     assert "sphere_image" not in (shifted.path / "postProcessing" / "particles" /
                                   "0" / "particles.dat").read_text()
 
-    parallel = Case.copy(shifted.path, tmp_path / "parallel", foam_env)
+    parallel = Case.copy(shifted.path, tmp_path / "parallel", foam_env, parameters=True)
     shutil.copy(HERE / "cases" / "sphereBox" / "system" / "decomposeParDict",
                 parallel.path / "system")
     parallel.run("blockMesh")
