@@ -732,6 +732,7 @@ void Foam::dlmParticleCloud::writeVTK() const
     Foam::sort(series);
 
     OFstream os(dir/"particles.vtk.series");
+    os.precision(10);
     os  << "{" << nl
         << "  \"file-series-version\" : \"1.0\"," << nl
         << "  \"files\" : [" << nl;
