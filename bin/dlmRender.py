@@ -25,7 +25,7 @@ def parse():
     parser.add_argument("--times", nargs="*", default=["latest"],
                         help="written times to render (default: the latest)")
     parser.add_argument("--frames", action="store_true",
-                        help="one frame per written time, in <output dir>/frames")
+                        help="also one frame per written time, in <case>/render/frames")
     parser.add_argument("--output", type=pathlib.Path,
                         help="PNG of a single time (default <case>/render/<case>_<time>.png)")
     parser.add_argument("--size", type=int, nargs=2, default=[800, 800], metavar=("W", "H"))
@@ -177,11 +177,6 @@ def main():
         raise SystemExit(f"dlmRender: no written time in {case}")
     scene = Scene(case, args)
     out = case / "render"
-    if args.frames:
-        (out / "frames").mkdir(parents=True, exist_ok=True)
-        for k, (value, name) in enumerate(times):
-            scene.render(name, value, out / "frames" / f"{case.name}_{k:04d}.png")
-        return
     chosen = times[-1:] if args.times == ["latest"] else \
         [t for t in times if t[1] in args.times or str(t[0]) in args.times]
     missing = set(args.times) - {"latest"} - {t[1] for t in chosen} - {str(t[0]) for t in chosen}
@@ -191,6 +186,10 @@ def main():
         png = args.output if args.output and len(chosen) == 1 else out / f"{case.name}_{name}.png"
         png.parent.mkdir(parents=True, exist_ok=True)
         scene.render(name, value, png)
+    if args.frames:
+        (out / "frames").mkdir(parents=True, exist_ok=True)
+        for k, (value, name) in enumerate(times):
+            scene.render(name, value, out / "frames" / f"{case.name}_{k:04d}.png")
 
 
 main()
