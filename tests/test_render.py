@@ -1,5 +1,5 @@
 """ParaView after set-up: paraFoam finds paraview, and dlmRender draws a
-case headless (pvbatch under Xvfb): the flow on a slice, the particle as
+case headless (pvbatch with its own Xvfb server): the flow on a slice, the particle as
 its true shape where it is, the solid fraction's 0.5 contour."""
 
 import pathlib
@@ -17,7 +17,7 @@ def test_parafoam_finds_paraview(foam_env):
     """paraFoam stopped with 'paraview: not found' before ParaView was part
     of the set-up."""
     path = foam_env["PATH"]
-    for program in ("paraFoam", "paraview", "pvbatch", "xvfb-run"):
+    for program in ("paraFoam", "paraview", "pvbatch", "Xvfb"):
         assert shutil.which(program, path=path), f"{program} not found"
 
 
