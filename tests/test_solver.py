@@ -336,3 +336,38 @@ def test_a_free_particle_reaching_a_wall_without_contacts_stops_with_an_error(tm
     assert "'contact' dictionary" in result.log
     last = case.times()[-1]
     assert last != "0" and (case.path / last / "uniform" / "particles").exists()
+
+
+def test_a_zero_time_step_set_while_running_stops_with_an_error(tmp_path, foam_env):
+    """system/controlDict changed to deltaT 0 while the solver runs
+    (runTimeModifiable): it stops naming the entry (the check ran at the
+    start only, and the next time derivative divided by zero)."""
+    import subprocess
+    import time
+    case = sphere_case(tmp_path, foam_env, "modified", settings={
+        ("system/controlDict", "endTime"): 50,
+        ("system/controlDict", "writeInterval"): 100000,
+        ("system/controlDict", "runTimeModifiable"): "true",
+    })
+    control = case.path / "system" / "controlDict"
+    control.write_text(control.read_text()
+                       + "OptimisationSwitches { fileModificationSkew 0; }\n")
+    log = case.path / "log.pimpleDLMFoam"
+    with open(log, "w") as out:
+        solver = subprocess.Popen(["pimpleDLMFoam"], cwd=case.path, stdout=out,
+                                  stderr=subprocess.STDOUT,
+                                  env=dict(foam_env, PWD=str(case.path)))
+        try:
+            deadline = time.time() + 60
+            while log.read_text().count("\nTime = ") < 5 and time.time() < deadline:
+                time.sleep(0.2)
+            assert solver.poll() is None
+            case.set("system/controlDict", "deltaT", 0)
+            returncode = solver.wait(timeout=60)
+        finally:
+            if solver.poll() is None:
+                solver.kill()
+    text = log.read_text()
+    assert returncode > 0
+    assert "deltaT 0 must be positive" in text and "controlDict" in text
+    assert "sigHandler" not in text

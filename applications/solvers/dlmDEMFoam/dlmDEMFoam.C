@@ -66,6 +66,8 @@ int main(int argc, char *argv[])
     {
         ++runTime;
         progress.update();
+        // Also after a change of system/controlDict while running
+        #include "checkDeltaT.H"
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 

@@ -74,16 +74,7 @@ int main(int argc, char *argv[])
     #include "createPimpleControl.H"
     #include "createTimeControls.H"
     #include "checkDeltaT.H"
-
-    // The adjusted step scales with maxCo and is bounded by maxDeltaT: a
-    // value that is not positive sets it to zero or below
-    if (adjustTimeStep && min(maxCo, maxDeltaT) <= 0)
-    {
-        FatalIOErrorInFunction(runTime.controlDict())
-            << (maxCo <= 0 ? "maxCo " : "maxDeltaT ")
-            << (maxCo <= 0 ? maxCo : maxDeltaT) << " must be positive with"
-            << " adjustTimeStep yes" << exit(FatalIOError);
-    }
+    #include "checkTimeControls.H"
 
     #include "createFields.H"
     #include "initContinuityErrs.H"
@@ -107,12 +98,15 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readTimeControls.H"
+        #include "checkTimeControls.H"
         #include "CourantNo.H"
         #include "particleCourantNo.H"
         #include "setDeltaT.H"
         #include "viscousNumber.H"
 
         ++runTime;
+        // Also after a change of system/controlDict while running
+        #include "checkDeltaT.H"
         progress.update();
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
