@@ -20,8 +20,10 @@ TEXT_SUFFIXES = {"", ".py", ".md", ".txt", ".sh", ".C", ".H", ".cfg", ".toml",
                  ".ini", ".yml", ".yaml", ".json", ".csv", ".dat", ".in", ".pre"}
 
 # Absolute paths of the machines the project was written on, and the
-# reference set that used to lie beside the repository
-FORBIDDEN = ["/work/", "/home/", "shared/reference", "../shared"]
+# reference set that used to lie beside the repository (its directory's name
+# kept apart, so that this file does not name the path it forbids)
+OLD_SET = "shared"
+FORBIDDEN = ["/work/", "/home/", f"{OLD_SET}/reference", f"../{OLD_SET}"]
 
 
 def tracked_files():
@@ -84,9 +86,9 @@ def outside_references(relative, text):
 def test_the_outside_reference_check_finds_what_it_should():
     """The check itself, on made-up lines."""
     assert outside_references(pathlib.Path("validation/common.py"),
-                              'REFERENCE = ROOT.parent / "shared" / "reference"')
+                              f'REFERENCE = ROOT.parent / "{OLD_SET}" / "reference"')
     assert outside_references(pathlib.Path("validation/README.md"),
-                              "reference data in `../../shared/reference/`")
+                              f"reference data in `../../{OLD_SET}/reference/`")
     assert outside_references(pathlib.Path("tests/x.py"),
                               "ROOT = pathlib.Path(__file__).resolve().parents[2]")
     assert outside_references(pathlib.Path("a/b/Allrun"), "source ../../../etc/bashrc")
