@@ -88,9 +88,7 @@ int main(int argc, char *argv[])
         particles.printSummary();
 
         // The last step writes its state, whatever the write interval
-        const bool lastStep =
-            runTime.value()
-          > runTime.endTime().value() - 0.5*runTime.deltaTValue();
+        const bool lastStep = progress.lastStep();
         particles.writeStep(lastStep);
         particleSteps += particles.particles().size();
 

@@ -51,7 +51,6 @@ Description
 #include "dlmParticleCloud.H"
 #include "runProgress.H"
 #include "rigidProjection.H"
-#include "centreDistances.H"
 #include "cpuTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -83,7 +82,7 @@ int main(int argc, char *argv[])
     #include "setInitialDeltaT.H"
 
     // Smallest squared distance between neighbouring cell centres
-    const scalar minDeltaSqr = sqr(gMin(centreDistances(mesh)));
+    const scalar minDeltaSqr = sqr(particles.cellSizeMin());
     #include "viscousNumber.H"
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -127,9 +126,7 @@ int main(int argc, char *argv[])
         // The last step and a stop at a wall write their state, whatever
         // the write interval
         const bool touching = particles.touchingBoundary();
-        const bool lastStep =
-            runTime.value()
-          > runTime.endTime().value() - 0.5*runTime.deltaTValue();
+        const bool lastStep = progress.lastStep();
 
         const cpuTime outputTimer;
         particles.writeStep(touching || lastStep);

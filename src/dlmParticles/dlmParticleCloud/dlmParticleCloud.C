@@ -545,7 +545,7 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
     const point& X = p.position();
     const scalar Rb = shape.boundingRadius();
 
-    const scalar reach = Rb + 1.01*cellSizeMax_;
+    const scalar reach = Rb + 1.01*cellSizes_.max();
     point lo(X - reach*vector::one);
     point hi(X + reach*vector::one);
     if (twoD())
@@ -787,8 +787,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     ),
     historyInterval_(properties_.getOrDefault<label>("historyInterval", 1)),
     nParticles_(0),
-    cellSizeMax_(gMax(centreDistances(mesh))),
-    cellSizeMin_(gMin(centreDistances(mesh))),
+    cellSizes_(gMinMax(centreDistances(mesh)())),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
     boundaryCell_(mesh.nCells(), false),
@@ -1168,13 +1167,7 @@ Foam::scalar Foam::dlmParticleCloud::maxSurfaceSpeed() const
     scalar speed = 0;
     for (label i = 0; i < nParticles_; ++i)
     {
-        const dlmParticle& p = particles_[i];
-        speed = max
-        (
-            speed,
-            mag(p.velocity())
-          + mag(p.angularVelocity())*p.shape().boundingRadius()
-        );
+        speed = max(speed, particles_[i].surfaceSpeed());
     }
     return speed;
 }
@@ -1190,9 +1183,7 @@ Foam::scalar Foam::dlmParticleCloud::courantNumber(const scalar deltaT) const
         {
             continue;
         }
-        const scalar R = p.shape().boundingRadius();
-        const scalar surfaceSpeed =
-            mag(p.velocity()) + mag(p.angularVelocity())*R;
+        const scalar surfaceSpeed = p.surfaceSpeed();
         // The fluid around lags a sudden change of the particle's motion
         // (a bounce): it meets the particle at the change's speed
         const scalar change =
@@ -1204,7 +1195,7 @@ Foam::scalar Foam::dlmParticleCloud::courantNumber(const scalar deltaT) const
             (mayBounce ? 2*surfaceSpeed : surfaceSpeed) + change
         );
     }
-    return speed*deltaT/cellSizeMin_;
+    return speed*deltaT/cellSizes_.min();
 }
 
 
