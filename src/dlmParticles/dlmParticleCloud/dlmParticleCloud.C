@@ -5,7 +5,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dlmParticleCloud.H"
-#include "rigidProjection.H"
 #include "zeroGradientFvPatchFields.H"
 #include "surfaceFields.H"
 #include "IFstream.H"
@@ -792,7 +791,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     cellIsBox_(mesh.nCells()),
     boundaryCell_(mesh.nCells(), false),
     touchingBoundary_(-1),
-    follower_(nullptr),
+    nMoves_(0),
     resolved_(!dry),
     splitDirections_(Zero),
     alpha_
@@ -824,6 +823,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
         zeroGradientFvPatchScalarField::typeName
     ),
     projected_(false),
+    contactPredicted_(false),
     workTime_(0),
     startTimeName_(mesh.time().timeName()),
     restarted_(false)
@@ -991,7 +991,10 @@ void Foam::dlmParticleCloud::move()
             }
         }
     }
+    const bool predicted = contactPredicted_;
+    contactPredicted_ = false;
     projected_ = false;
+    ++nMoves_;
 
     const scalar deltaT = mesh_.time().deltaTValue();
 
@@ -1012,10 +1015,11 @@ void Foam::dlmParticleCloud::move()
         // which the mixture took this step as a prediction (the rigid
         // projection's source): they come off, the sub-steps add the
         // actual contact, and the rigid projection then gives the
-        // particle's cells its velocity at the end of the step. The
-        // prediction makes a resting particle's load on its contact exact
-        // whatever the mixture's inertia in its cells.
-        if (follower_)
+        // particle's cells its velocity at the end of the step (the
+        // solver's follow step). The prediction makes a resting particle's
+        // load on its contact exact whatever the mixture's inertia in its
+        // cells.
+        if (predicted)
         {
             for (dlmParticle& p : particles_)
             {
@@ -1053,10 +1057,6 @@ void Foam::dlmParticleCloud::move()
             }
         }
         contact_->evolve(deltaT, accel, angularAccel);
-        if (follower_)
-        {
-            follower_->followParticles();
-        }
     }
     else
     {

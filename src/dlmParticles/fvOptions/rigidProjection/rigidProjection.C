@@ -319,31 +319,29 @@ Foam::vector Foam::fv::rigidProjection::gravity() const
 
 void Foam::fv::rigidProjection::updateRegions()
 {
-    const label timeIndex = mesh_.time().timeIndex();
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
     if
     (
         mixedCells_ != mixedCellsType::interpolated
-     || regionTimeIndex_ == timeIndex
+     || regionMoves_ == cloud.nMoves()
     )
     {
         return;
     }
 
-    const dlmParticleCloud& cloud =
-        mesh_.lookupObject<dlmParticleCloud>("particles");
     const label nParticles = cloud.particles().size();
 
     // Fixed particles alone (a fixed bed) keep their cells and sums: found
     // at the first step only
-    bool moved = regionTimeIndex_ < 0;
+    bool allFixed = true;
     for (const dlmParticle& p : cloud.particles())
     {
-        moved = moved || p.motion() != dlmParticle::motionType::fixed;
+        allFixed = allFixed && p.motion() == dlmParticle::motionType::fixed;
     }
-    if (!moved)
+    if (regionMoves_ >= 0 && allFixed)
     {
-        heldForce_ = force_.primitiveField();
-        regionTimeIndex_ = timeIndex;
+        regionMoves_ = cloud.nMoves();
         return;
     }
 
@@ -367,6 +365,7 @@ void Foam::fv::rigidProjection::updateRegions()
         ++nSearches;
     }
     markGapFaces();
+    blendExcessMass();
 
     if (debug)
     {
@@ -385,7 +384,56 @@ void Foam::fv::rigidProjection::updateRegions()
     restrictForce();
     heldForce_ = force_.primitiveField();
     sumRegionGeometry();
-    regionTimeIndex_ = timeIndex;
+    regionMoves_ = cloud.nMoves();
+}
+
+
+void Foam::fv::rigidProjection::blendExcessMass()
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const scalarField& rho = cloud.rho();
+    const scalar rhoFluid = cloud.rhoFluid().value();
+    const vectorField& C = mesh_.C();
+    scalarField fraction(mesh_.nCells(), Zero);
+
+    forAll(cloud.particles(), i)
+    {
+        const dlmParticle& p = cloud.particles()[i];
+        const scalar excess = p.mixtureDensity(rhoFluid) - rhoFluid;
+        if (excess == 0)
+        {
+            continue;
+        }
+        const DynamicList<label>& covered = cloud.cells(i);
+        const DynamicList<scalar>& fractions = cloud.fractions(i);
+        forAll(covered, k)
+        {
+            fraction[covered[k]] = fractions[k];
+        }
+        const DynamicList<label>& cells = regionCells_[i];
+        forAll(cells, k)
+        {
+            const label celli = cells[k];
+            const scalar b = excess*fraction[celli]/rho[celli];
+            regionWeights_[i][k] = b + (1 - b)*regionWeights_[i][k];
+            regionArms_[i][k] =
+                b*(C[celli] - p.position()) + (1 - b)*regionArms_[i][k];
+            for
+            (
+                label s = sampleStarts_[i][k];
+                s < sampleStarts_[i][k + 1];
+                ++s
+            )
+            {
+                sampleCoeffs_[i][s] *= 1 - b;
+            }
+        }
+        for (const label celli : covered)
+        {
+            fraction[celli] = 0;
+        }
+    }
 }
 
 
@@ -1201,7 +1249,7 @@ Foam::fv::rigidProjection::rigidProjection
     secondLayerCell_(mesh.nBoundaryFaces(), -1),
     secondLayerDelta_(mesh.nBoundaryFaces(), Zero),
     secondLayerAcross_(mesh.nBoundaryFaces(), false),
-    regionTimeIndex_(-1),
+    regionMoves_(-1),
     ddtRate_(0),
     ddtRateTimeIndex_(-1)
 {
@@ -1259,6 +1307,11 @@ Foam::fv::rigidProjection::rigidProjection
     forAll(hasSecondLayer, bFacei)
     {
         secondLayerAcross_[bFacei] = hasSecondLayer[bFacei] > 0;
+    }
+
+    if (mesh.foundObject<dlmParticleCloud>("particles"))
+    {
+        recordFractions(mesh.lookupObject<dlmParticleCloud>("particles"));
     }
 
     read(dict);
@@ -1358,6 +1411,11 @@ void Foam::fv::rigidProjection::addSup
     }
 
     eqn += source;
+    if (mixedCells_ == mixedCellsType::interpolated)
+    {
+        // The follow step gives the forced cells the contacts' change
+        cloud.setContactPredicted();
+    }
     cloud.addWorkTime(timer.elapsedCpuTime());
 }
 
@@ -1444,7 +1502,6 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
     {
         updateRegions();
         correctInterpolated(U);
-        cloud.setFollower(*this);
     }
     else
     {
@@ -1457,11 +1514,41 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
 }
 
 
-void Foam::fv::rigidProjection::followParticles()
+void Foam::fv::rigidProjection::recordFractions
+(
+    const dlmParticleCloud& cloud
+)
 {
-    const dlmParticleCloud& cloud =
-        mesh_.lookupObject<dlmParticleCloud>("particles");
+    followedCells_.setSize(cloud.nParticles());
+    followedFractions_.setSize(cloud.nParticles());
+    forAll(followedCells_, body)
+    {
+        followedCells_[body].clear();
+        followedFractions_[body].clear();
+    }
+    forAll(cloud.particles(), i)
+    {
+        const label body = cloud.source(i);
+        followedCells_[body].append(cloud.cells(i));
+        followedFractions_[body].append(cloud.fractions(i));
+    }
+}
+
+
+void Foam::fv::rigidProjection::followParticles
+(
+    volVectorField& U,
+    surfaceScalarField& phi
+)
+{
+    const cpuTime timer;
+    dlmParticleCloud& cloud =
+        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
     const PtrList<dlmParticle>& particles = cloud.particles();
+    const scalarField& rho = cloud.rho();
+    const scalar rhoFluid = cloud.rhoFluid().value();
+    const vectorField& C = mesh_.C();
+    const vectorField& u = U.primitiveField();
 
     volVectorField change
     (
@@ -1470,34 +1557,99 @@ void Foam::fv::rigidProjection::followParticles()
         dimensionedVector(dimVelocity, Zero)
     );
     bool changed = false;
-    forAll(projectedVelocity_, i)
+
+    // The contact sub-steps' change of each free particle's velocity since
+    // the projection, in its forced cells (found before the move)
+    if (mixedCells_ == mixedCellsType::interpolated)
+    {
+        forAll(projectedVelocity_, i)
+        {
+            const dlmParticle& p = particles[i];
+            const vector dU(p.velocity() - projectedVelocity_[i]);
+            const vector dOmega(p.angularVelocity() - projectedOmega_[i]);
+            if (!p.isFree() || (dU == vector::zero && dOmega == vector::zero))
+            {
+                continue;
+            }
+            changed = true;
+            const DynamicList<label>& cells = regionCells_[i];
+            forAll(cells, k)
+            {
+                change[cells[k]] +=
+                    regionWeights_[i][k]*dU + (dOmega ^ regionArms_[i][k]);
+            }
+        }
+    }
+
+    // The excess mass each particle moved into a cell brings its velocity
+    const vectorField followed(u + change.primitiveField());
+    scalarField fraction0(mesh_.nCells(), Zero);
+    forAll(particles, i)
     {
         const dlmParticle& p = particles[i];
-        const vector dU(p.velocity() - projectedVelocity_[i]);
-        const vector dOmega(p.angularVelocity() - projectedOmega_[i]);
-        if (!p.isFree() || (dU == vector::zero && dOmega == vector::zero))
+        const scalar excess = p.mixtureDensity(rhoFluid) - rhoFluid;
+        const label body = cloud.source(i);
+        if (excess <= 0 || body >= followedCells_.size())
         {
             continue;
         }
-        changed = true;
-        const DynamicList<label>& cells = regionCells_[i];
+
+        // The body's fractions at the last follow step (its images' too)
+        forAll(followedCells_[body], k)
+        {
+            fraction0[followedCells_[body][k]] = followedFractions_[body][k];
+        }
+
+        const DynamicList<label>& cells = cloud.cells(i);
+        const DynamicList<scalar>& fractions = cloud.fractions(i);
         forAll(cells, k)
         {
-            change[cells[k]] +=
-                regionWeights_[i][k]*dU + (dOmega ^ regionArms_[i][k]);
+            const label celli = cells[k];
+            const scalar gained = excess*(fractions[k] - fraction0[celli]);
+            if (gained > 0)
+            {
+                const vector us
+                (
+                    p.velocity()
+                  + (p.angularVelocity() ^ (C[celli] - p.position()))
+                );
+                change[celli] += gained/rho[celli]*(us - followed[celli]);
+                changed = true;
+            }
+        }
+
+        for (const label celli : followedCells_[body])
+        {
+            fraction0[celli] = 0;
         }
     }
-    if (!returnReduce(changed, orOp<bool>()))
-    {
-        return;
-    }
-    change.correctBoundaryConditions();
+    recordFractions(cloud);
 
-    volVectorField& U = mesh_.lookupObjectRef<volVectorField>(fieldNames_[0]);
-    surfaceScalarField& phi = mesh_.lookupObjectRef<surfaceScalarField>("phi");
-    U.primitiveFieldRef() += change.primitiveField();
-    U.correctBoundaryConditions();
-    phi += fvc::flux(change);
+    if (returnReduce(changed, orOp<bool>()))
+    {
+        change.correctBoundaryConditions();
+        U.primitiveFieldRef() += change.primitiveField();
+        U.correctBoundaryConditions();
+        phi += fvc::flux(change);
+    }
+    cloud.addWorkTime(timer.elapsedCpuTime());
+}
+
+
+Foam::fv::rigidProjection* Foam::fv::rigidProjection::find
+(
+    optionList& options
+)
+{
+    PtrList<option>& list = options;
+    for (option& entry : list)
+    {
+        if (isA<rigidProjection>(entry))
+        {
+            return &refCast<rigidProjection>(entry);
+        }
+    }
+    return nullptr;
 }
 
 
