@@ -90,3 +90,36 @@ def test_the_early_fluid_force_on_a_heavy_sphere_does_not_grow_with_its_density(
     assert np.abs(forces[1e5]).max() < 0.05*weight
     assert forces[1e6].mean() == pytest.approx(forces[1e5].mean(), rel=0.05)
     assert np.abs(forces[1e6] - forces[1e5]).max() < 0.3*forces[1e5].max()
+
+
+@pytest.mark.parametrize("ratio", [0.1, 0.3, 0.5, 2, 10, 100, 1000])
+def test_particles_light_and_heavy_move_without_blow_up(tmp_path, foam_env, ratio):
+    """Density ratios from 0.1 to 1000 in water (nu 1e-3), released from
+    rest with an adjustable step (maxCo 0.5) for 0.06 s (light ones reach
+    their terminal speed, the heaviest falls 2 diameters): each rises or
+    sinks at
+    most as fast as its buoyancy alone would take it, the fluid stays
+    slower than twice the particle, and the particle does not drift
+    sideways."""
+    case = Case.copy(SPHERE_BOX, tmp_path / f"ratio{ratio:g}", foam_env)
+    case.run("blockMesh")
+    for (file, entry), value in {
+        ("constant/particleProperties", "particles/sphere/density"): 1000*ratio,
+        ("system/controlDict", "adjustTimeStep"): "yes",
+        ("constant/particleProperties", "particles/sphere/position"):
+            "(0.0151 0.0149 0.015)" if ratio < 1 else "(0.0151 0.0149 0.03)",
+        ("system/controlDict", "endTime"): 0.06,
+        ("system/controlDict", "writeInterval"): 1000,
+    }.items():
+        case.set(file, entry, value)
+    case.run("pimpleDLMFoam")
+    h = case.history()["sphere"]
+    assert np.isfinite(h).all()
+    t, uz = h[1:, 0], h[1:, 6]
+    # Buoyancy alone, with the added mass of a sphere (coefficient 1/2)
+    free = (ratio - 1)/(ratio + 0.5)*G*t
+    assert np.all(np.sign(uz) == -np.sign(ratio - 1))
+    assert np.all(np.abs(uz) <= np.abs(free)*1.001)
+    assert np.abs(h[:, 4:6]).max() < 0.01*np.abs(uz).max()
+    U = case.internal_field(f"{case.times()[-1]}/U")
+    assert np.linalg.norm(U, axis=1).max() < 2*np.abs(uz[-1])
