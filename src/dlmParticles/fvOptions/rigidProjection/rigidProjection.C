@@ -9,10 +9,8 @@
 #include "uniformDimensionedFields.H"
 #include "fvMatrices.H"
 #include "fvmDdt.H"
-#include "emptyFvPatch.H"
 #include "scalarMatrices.H"
 #include "cpuTime.H"
-#include "syncTools.H"
 #include "fvcFlux.H"
 #include "HashSet.H"
 #include "OStringStream.H"
@@ -90,9 +88,6 @@ namespace
         kTorque = 16,       // sum V r x f (3)
         nRestrictSums = 19
     };
-
-    // Sample code for the second cell across a coupled face
-    const Foam::label secondLayerSample = -2;
 
     inline Foam::vector sumVector(const Foam::scalar* s)
     {
@@ -330,8 +325,6 @@ void Foam::fv::rigidProjection::updateRegions()
         return;
     }
 
-    const label nParticles = cloud.particles().size();
-
     // Fixed particles alone (a fixed bed) keep their cells and sums: found
     // at the first step only
     bool allFixed = true;
@@ -345,38 +338,19 @@ void Foam::fv::rigidProjection::updateRegions()
         return;
     }
 
-    regionCells_.setSize(nParticles);
-    regionWeights_.setSize(nParticles);
-    regionArms_.setSize(nParticles);
-    sampleStarts_.setSize(nParticles);
-    sampleCells_.setSize(nParticles);
-    sampleFaces_.setSize(nParticles);
-    sampleCoeffs_.setSize(nParticles);
-
-    // A profile whose first sample is a cell left to the flow is linear;
-    // those cells are known once the regions are, which are then found
-    // again where one is sampled (the same cells, other weights)
-    markInsideCells();
-    label nSearches = 1;
-    findRegions();
-    if (markLeftToFlow())
-    {
-        findRegions();
-        ++nSearches;
-    }
-    markGapFaces();
-    blendExcessMass();
+    const label nSearches = regions_.update();
+    regions_.setBlendingFactor(blendingFactor_, gapBlending_);
 
     if (debug)
     {
         label nForced = 0;
-        for (const DynamicList<label>& cells : regionCells_)
+        for (const DynamicList<label>& cells : regions_.cells())
         {
             nForced += cells.size();
         }
         Info<< type() << ": " << returnReduce(nForced, sumOp<label>())
             << " forced cells, "
-            << returnReduce(sum(leftToFlow_), sumOp<label>())
+            << returnReduce(sum(regions_.leftToFlow()), sumOp<label>())
             << " left to the flow, found in " << nSearches << " searches"
             << endl;
     }
@@ -385,628 +359,6 @@ void Foam::fv::rigidProjection::updateRegions()
     heldForce_ = force_.primitiveField();
     sumRegionGeometry();
     regionMoves_ = cloud.nMoves();
-}
-
-
-void Foam::fv::rigidProjection::blendExcessMass()
-{
-    const dlmParticleCloud& cloud =
-        mesh_.lookupObject<dlmParticleCloud>("particles");
-    const scalarField& rho = cloud.rho();
-    const scalar rhoFluid = cloud.rhoFluid().value();
-    const vectorField& C = mesh_.C();
-    scalarField fraction(mesh_.nCells(), Zero);
-
-    forAll(cloud.particles(), i)
-    {
-        const dlmParticle& p = cloud.particles()[i];
-        const scalar excess = p.mixtureDensity(rhoFluid) - rhoFluid;
-        if (excess == 0)
-        {
-            continue;
-        }
-        const DynamicList<label>& covered = cloud.cells(i);
-        const DynamicList<scalar>& fractions = cloud.fractions(i);
-        forAll(covered, k)
-        {
-            fraction[covered[k]] = fractions[k];
-        }
-        const DynamicList<label>& cells = regionCells_[i];
-        forAll(cells, k)
-        {
-            const label celli = cells[k];
-            const scalar b = excess*fraction[celli]/rho[celli];
-            regionWeights_[i][k] = b + (1 - b)*regionWeights_[i][k];
-            regionArms_[i][k] =
-                b*(C[celli] - p.position()) + (1 - b)*regionArms_[i][k];
-            for
-            (
-                label s = sampleStarts_[i][k];
-                s < sampleStarts_[i][k + 1];
-                ++s
-            )
-            {
-                sampleCoeffs_[i][s] *= 1 - b;
-            }
-        }
-        for (const label celli : covered)
-        {
-            fraction[celli] = 0;
-        }
-    }
-}
-
-
-void Foam::fv::rigidProjection::findRegions()
-{
-    forAll(regionCells_, i)
-    {
-        findRegion(i);
-    }
-    resolveSharedCells();
-}
-
-
-void Foam::fv::rigidProjection::exchangeAcross
-(
-    const labelList& cellValues,
-    labelList& across,
-    labelList& secondLayer
-) const
-{
-    syncTools::swapBoundaryCellList(mesh_, cellValues, across);
-    forAll(secondLayer, bFacei)
-    {
-        secondLayer[bFacei] =
-            secondLayerCell_[bFacei] >= 0
-          ? cellValues[secondLayerCell_[bFacei]]
-          : -1;
-    }
-    syncTools::swapBoundaryFaceList(mesh_, secondLayer);
-}
-
-
-void Foam::fv::rigidProjection::markInsideCells()
-{
-    const dlmParticleCloud& cloud =
-        mesh_.lookupObject<dlmParticleCloud>("particles");
-    const PtrList<dlmParticle>& particles = cloud.particles();
-    const vectorField& C = mesh_.C();
-
-    insideOf_ = -1;
-    DynamicList<label> insideCells;
-    forAll(particles, i)
-    {
-        const dlmParticle& p = particles[i];
-        const tensor Rt(p.R().T());
-        vector normal;
-        for (const label celli : cloud.nearCells(i))
-        {
-            if
-            (
-                p.shape().signedDistance(Rt & (C[celli] - p.position()), normal)
-              < 0
-            )
-            {
-                insideOf_[celli] = cloud.source(i);
-                insideCells.append(celli);
-            }
-        }
-    }
-
-    exchangeAcross(insideOf_, insideAcross_, insideSecondLayer_);
-
-    // The body next to each fluid cell, across its faces
-    auto addBody = [](label& next, const label body)
-    {
-        if (body >= 0 && next != body)
-        {
-            next = next == -1 ? body : -2;
-        }
-    };
-    // Only the faces of inside cells can make a neighbour next to a body
-    // (a cell listed twice adds its body twice, which changes nothing)
-    nextTo_ = -1;
-    for (const label celli : insideCells)
-    {
-        for (const label facei : mesh_.cells()[celli])
-        {
-            if (mesh_.isInternalFace(facei))
-            {
-                const label own = mesh_.owner()[facei];
-                addBody
-                (
-                    nextTo_[own == celli ? mesh_.neighbour()[facei] : own],
-                    insideOf_[celli]
-                );
-            }
-        }
-    }
-    const labelUList& faceCells = mesh_.faceOwner();
-    forAll(insideAcross_, bFacei)
-    {
-        addBody
-        (
-            nextTo_[faceCells[mesh_.nInternalFaces() + bFacei]],
-            insideAcross_[bFacei]
-        );
-    }
-    exchangeAcross(nextTo_, nextToAcross_, nextToSecondLayer_);
-
-    leftToFlow_ = 0;
-    leftToFlowAcross_ = 0;
-    leftToFlowSecondLayer_ = 0;
-}
-
-
-bool Foam::fv::rigidProjection::markLeftToFlow()
-{
-    labelList forced(mesh_.nCells(), 0);
-    for (const DynamicList<label>& cells : regionCells_)
-    {
-        for (const label celli : cells)
-        {
-            forced[celli] = 1;
-        }
-    }
-    forAll(leftToFlow_, celli)
-    {
-        if (insideOf_[celli] < 0 && nextTo_[celli] != -1 && !forced[celli])
-        {
-            leftToFlow_[celli] = 1;
-        }
-    }
-    exchangeAcross(leftToFlow_, leftToFlowAcross_, leftToFlowSecondLayer_);
-
-    bool sampled = false;
-    forAll(sampleCells_, i)
-    {
-        forAll(sampleCells_[i], s)
-        {
-            sampled =
-                sampled
-             || sampleLeftToFlow(sampleCells_[i][s], sampleFaces_[i][s]);
-        }
-    }
-    return returnReduce(sampled, orOp<bool>());
-}
-
-
-void Foam::fv::rigidProjection::markGapFaces()
-{
-    const labelList& gap = leftToFlow_;
-    const labelList& gapAcross = leftToFlowAcross_;
-
-    scalarField& internal = blendingFactor_.primitiveFieldRef();
-    forAll(internal, facei)
-    {
-        internal[facei] =
-            gap[mesh_.owner()[facei]] || gap[mesh_.neighbour()[facei]]
-          ? gapBlending_
-          : 1;
-    }
-    surfaceScalarField::Boundary& boundary =
-        blendingFactor_.boundaryFieldRef();
-    forAll(boundary, patchi)
-    {
-        const fvPatch& fp = mesh_.boundary()[patchi];
-        forAll(boundary[patchi], facei)
-        {
-            const label bFacei = fp.start() + facei - mesh_.nInternalFaces();
-            boundary[patchi][facei] =
-                gap[fp.faceCells()[facei]]
-             || (fp.coupled() && gapAcross[bFacei])
-              ? gapBlending_
-              : 1;
-        }
-    }
-}
-
-
-bool Foam::fv::rigidProjection::sampleUsable
-(
-    const label body,
-    const label celli,
-    const labelPair& face
-) const
-{
-    label inside = -1;
-    label next = -1;
-    if (celli >= 0)
-    {
-        inside = insideOf_[celli];
-        next = nextTo_[celli];
-    }
-    else
-    {
-        const fvPatch& fp = mesh_.boundary()[face.first()];
-        if (!fp.coupled())
-        {
-            return true;
-        }
-        const label bFacei = fp.start() + face.second() - mesh_.nInternalFaces();
-        const bool second = celli == secondLayerSample;
-        inside = second ? insideSecondLayer_[bFacei] : insideAcross_[bFacei];
-        next = second ? nextToSecondLayer_[bFacei] : nextToAcross_[bFacei];
-    }
-    return inside < 0 && (next == -1 || next == body);
-}
-
-
-bool Foam::fv::rigidProjection::sampleLeftToFlow
-(
-    const label celli,
-    const labelPair& face
-) const
-{
-    if (celli >= 0)
-    {
-        return leftToFlow_[celli] > 0;
-    }
-    const fvPatch& fp = mesh_.boundary()[face.first()];
-    if (!fp.coupled())
-    {
-        return false;
-    }
-    const label bFacei = fp.start() + face.second() - mesh_.nInternalFaces();
-    return
-        celli == secondLayerSample
-      ? leftToFlowSecondLayer_[bFacei] > 0
-      : leftToFlowAcross_[bFacei] > 0;
-}
-
-
-void Foam::fv::rigidProjection::findRegion(const label i)
-{
-    const dlmParticleCloud& cloud =
-        mesh_.lookupObject<dlmParticleCloud>("particles");
-    const dlmParticle& p = cloud.particles()[i];
-    const label body = cloud.source(i);
-    const particleShape& shape = p.shape();
-    const point& X = p.position();
-    const tensor Rt(p.R().T());
-
-    const vectorField& C = mesh_.C();
-    const labelUList& owner = mesh_.owner();
-    const labelUList& neighbour = mesh_.neighbour();
-    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
-
-    DynamicList<label>& cells = regionCells_[i];
-    DynamicList<scalar>& weights = regionWeights_[i];
-    DynamicList<vector>& arms = regionArms_[i];
-    DynamicList<label>& starts = sampleStarts_[i];
-    DynamicList<label>& sampleCells = sampleCells_[i];
-    DynamicList<labelPair>& sampleFaces = sampleFaces_[i];
-    DynamicList<scalar>& sampleCoeffs = sampleCoeffs_[i];
-    cells.clear();
-    weights.clear();
-    arms.clear();
-    starts.clear();
-    sampleCells.clear();
-    sampleFaces.clear();
-    sampleCoeffs.clear();
-
-    // An interface cell's centre lies within a neighbour distance of the
-    // surface: it is among the particle's near cells
-    const labelUList& candidates = cloud.nearCells(i);
-    const scalar cellSizeMax = cloud.cellSizeMax();
-
-    // Which candidates have their centre inside
-    for (const label celli : candidates)
-    {
-        vector normal;
-        inside_[celli] =
-            shape.signedDistance(Rt & (C[celli] - X), normal) < 0;
-    }
-
-    // Neighbours of a cell across its faces: direction, sample, inside
-    struct neighbourSample
-    {
-        vector delta;
-        label celli;
-        labelPair face;
-        bool inside;
-    };
-    DynamicList<neighbourSample> nbrs(6);
-
-    vector normal;
-    for (const label celli : candidates)
-    {
-        if (inside_[celli])
-        {
-            cells.append(celli);
-            weights.append(1);
-            arms.append(C[celli] - X);
-            starts.append(sampleCells.size());
-            continue;
-        }
-
-        const scalar d0 = shape.signedDistance(Rt & (C[celli] - X), normal);
-        if (d0 >= cellSizeMax)
-        {
-            continue;
-        }
-
-        nbrs.clear();
-        bool anyInside = false;
-        for (const label facei : mesh_.cells()[celli])
-        {
-            neighbourSample nbr{Zero, -1, labelPair(-1, -1), false};
-            if (mesh_.isInternalFace(facei))
-            {
-                nbr.celli =
-                    owner[facei] == celli ? neighbour[facei] : owner[facei];
-                nbr.delta = C[nbr.celli] - C[celli];
-            }
-            else
-            {
-                const label patchi = patches.whichPatch(facei);
-                const fvPatch& fp = mesh_.boundary()[patchi];
-                if (isA<emptyFvPatch>(fp))
-                {
-                    continue;
-                }
-                const label localFacei = facei - fp.start();
-                nbr.face = labelPair(patchi, localFacei);
-                nbr.delta =
-                    fp.coupled()
-                  ? coupledDeltas_[patchi][localFacei]
-                  : fp.Cf()[localFacei] - C[celli];
-            }
-            if (nbr.celli >= 0)
-            {
-                nbr.inside = inside_[nbr.celli];
-            }
-            else if (mesh_.boundary()[nbr.face.first()].coupled())
-            {
-                nbr.inside =
-                    shape.signedDistance
-                    (
-                        Rt & (C[celli] + nbr.delta - X),
-                        normal
-                    ) < 0;
-            }
-            anyInside = anyInside || nbr.inside;
-            nbrs.append(nbr);
-        }
-
-        if (!anyInside)
-        {
-            continue;
-        }
-
-        // Normal at the surface point nearest to the cell centre
-        shape.signedDistance(Rt & (C[celli] - X), normal);
-        const vector n(p.R() & normal);
-
-        // One linear profile per grid line from the cell to an inside
-        // neighbour, between the surface and the opposite neighbour
-        scalar weightSum = 0;
-        scalar a = 0;
-        vector q(Zero);
-        const label start = sampleCells.size();
-        for (const neighbourSample& in : nbrs)
-        {
-            if (!in.inside)
-            {
-                continue;
-            }
-            const scalar L = mag(in.delta);
-            const vector e(in.delta/L);
-
-            const neighbourSample* out = nullptr;
-            scalar cosOut = -0.7;
-            for (const neighbourSample& cand : nbrs)
-            {
-                const scalar c = (e & cand.delta)/mag(cand.delta);
-                if
-                (
-                    !cand.inside
-                 && sampleUsable(body, cand.celli, cand.face)
-                 && c < cosOut
-                )
-                {
-                    out = &cand;
-                    cosOut = c;
-                }
-            }
-            if (!out)
-            {
-                continue;
-            }
-
-            const scalar t =
-                shape.surfaceCrossing(Rt & (C[celli] - X), Rt & e, L);
-            const scalar Lout = -(e & out->delta);
-            const scalar w = sqr(e & n) + SMALL;
-
-            // The next sample out along the line, for a quadratic profile:
-            // a cell or face beyond an inner cell, or the cell beyond a
-            // coupled face (second layer, exchanged at each correction)
-            label out2Cell = -1;
-            labelPair out2Face(-1, -1);
-            vector delta2(Zero);
-            bool quadratic = false;
-            if (out->celli >= 0)
-            {
-                quadratic =
-                    nextAlong(out->celli, -e, out2Cell, out2Face, delta2);
-            }
-            else if (mesh_.boundary()[out->face.first()].coupled())
-            {
-                const label bFacei =
-                    mesh_.boundary()[out->face.first()].start()
-                  + out->face.second() - mesh_.nInternalFaces();
-                if (secondLayerAcross_[bFacei])
-                {
-                    out2Cell = secondLayerSample;
-                    out2Face = out->face;
-                    delta2 = secondLayerDelta_[bFacei];
-                    quadratic = true;
-                }
-            }
-            // Two or three fluid cells between surfaces: forced towards
-            // each other they would block the gap, so leave the line to the
-            // flow
-            if (quadratic && !sampleUsable(body, out2Cell, out2Face))
-            {
-                continue;
-            }
-            const scalar Lout2 = -(e & delta2);
-            // A first sample left to the flow takes the linear profile's
-            // weight, at most a half, not the quadratic's, up to 1
-            quadratic =
-                quadratic && Lout2 > 0.5*Lout
-             && !sampleLeftToFlow(out->celli, out->face);
-
-            scalar aLine, cOut, cOut2 = 0;
-            if (quadratic)
-            {
-                aLine = Lout*(Lout + Lout2)/((t + Lout)*(t + Lout + Lout2));
-                cOut = t*(Lout + Lout2)/((t + Lout)*Lout2);
-                cOut2 = -t*Lout/((t + Lout + Lout2)*Lout2);
-            }
-            else
-            {
-                aLine = Lout/(t + Lout);
-                cOut = 1 - aLine;
-            }
-
-            weightSum += w;
-            a += w*aLine;
-            q += w*aLine*(C[celli] + t*e - X);
-            sampleCells.append(out->celli);
-            sampleFaces.append(out->face);
-            sampleCoeffs.append(w*cOut);
-            if (quadratic)
-            {
-                sampleCells.append(out2Cell);
-                sampleFaces.append(out2Face);
-                sampleCoeffs.append(w*cOut2);
-            }
-        }
-
-        if (weightSum > 0)
-        {
-            cells.append(celli);
-            weights.append(a/weightSum);
-            arms.append(q/weightSum);
-            starts.append(start);
-            for (label k = start; k < sampleCoeffs.size(); ++k)
-            {
-                sampleCoeffs[k] /= weightSum;
-            }
-        }
-        else
-        {
-            sampleCells.setSize(start);
-            sampleFaces.setSize(start);
-            sampleCoeffs.setSize(start);
-        }
-    }
-    starts.append(sampleCells.size());
-
-    for (const label celli : candidates)
-    {
-        inside_[celli] = false;
-    }
-}
-
-
-void Foam::fv::rigidProjection::resolveSharedCells()
-{
-    const dlmParticleCloud& cloud =
-        mesh_.lookupObject<dlmParticleCloud>("particles");
-    const PtrList<dlmParticle>& particles = cloud.particles();
-    const vectorField& C = mesh_.C();
-
-    auto signedDistance = [&](const label i, const label celli)
-    {
-        const dlmParticle& p = particles[i];
-        vector normal;
-        return p.shape().signedDistance
-        (
-            p.R().T() & (C[celli] - p.position()),
-            normal
-        );
-    };
-
-    bool shared = false;
-    forAll(particles, i)
-    {
-        for (const label celli : regionCells_[i])
-        {
-            label& owner = regionOwner_[celli];
-            if (owner < 0)
-            {
-                owner = i;
-            }
-            else
-            {
-                shared = true;
-                if (signedDistance(i, celli) < signedDistance(owner, celli))
-                {
-                    owner = i;
-                }
-            }
-        }
-    }
-
-    if (shared)
-    {
-        forAll(particles, i)
-        {
-            DynamicList<label>& cells = regionCells_[i];
-            DynamicList<scalar>& weights = regionWeights_[i];
-            DynamicList<vector>& arms = regionArms_[i];
-            DynamicList<label>& starts = sampleStarts_[i];
-            DynamicList<label>& sampleCells = sampleCells_[i];
-            DynamicList<labelPair>& sampleFaces = sampleFaces_[i];
-            DynamicList<scalar>& sampleCoeffs = sampleCoeffs_[i];
-
-            // Compact in place: kept entries only move towards the front
-            label nKept = 0;
-            label nSamples = 0;
-            forAll(cells, k)
-            {
-                if (regionOwner_[cells[k]] != i)
-                {
-                    continue;
-                }
-                const label first = starts[k];
-                const label last = starts[k + 1];
-                cells[nKept] = cells[k];
-                weights[nKept] = weights[k];
-                arms[nKept] = arms[k];
-                starts[nKept] = nSamples;
-                for (label s = first; s < last; ++s)
-                {
-                    sampleCells[nSamples] = sampleCells[s];
-                    sampleFaces[nSamples] = sampleFaces[s];
-                    sampleCoeffs[nSamples] = sampleCoeffs[s];
-                    ++nSamples;
-                }
-                ++nKept;
-            }
-            starts[nKept] = nSamples;
-            cells.setSize(nKept);
-            weights.setSize(nKept);
-            arms.setSize(nKept);
-            starts.setSize(nKept + 1);
-            sampleCells.setSize(nSamples);
-            sampleFaces.setSize(nSamples);
-            sampleCoeffs.setSize(nSamples);
-        }
-    }
-
-    // Every shared cell stays in its owner's list: reset through them
-    forAll(particles, i)
-    {
-        for (const label celli : regionCells_[i])
-        {
-            regionOwner_[celli] = -1;
-        }
-    }
 }
 
 
@@ -1027,13 +379,13 @@ void Foam::fv::rigidProjection::sumRegionGeometry()
         const point& X = p.position();
         scalar* s = &geometricSums_[nGeometricSums*i];
 
-        const DynamicList<label>& cells = regionCells_[i];
+        const DynamicList<label>& cells = regions_.cells()[i];
         forAll(cells, k)
         {
             const label celli = cells[k];
             const scalar m = rho[celli]*V[celli];
-            const scalar a = regionWeights_[i][k];
-            const vector& q = regionArms_[i][k];
+            const scalar a = regions_.weights()[i][k];
+            const vector& q = regions_.arms()[i][k];
             const vector r(C[celli] - X);
             s[gA11] += m*a;
             addVector(s + gMq, m*q);
@@ -1062,59 +414,6 @@ void Foam::fv::rigidProjection::sumRegionGeometry()
 }
 
 
-bool Foam::fv::rigidProjection::nextAlong
-(
-    const label celli,
-    const vector& e,
-    label& nbrCell,
-    labelPair& nbrFace,
-    vector& delta
-) const
-{
-    const vectorField& C = mesh_.C();
-    scalar bestCos = 0.9;
-    bool found = false;
-    for (const label facei : mesh_.cells()[celli])
-    {
-        label cellj = -1;
-        labelPair face(-1, -1);
-        vector d;
-        if (mesh_.isInternalFace(facei))
-        {
-            cellj =
-                mesh_.owner()[facei] == celli
-              ? mesh_.neighbour()[facei]
-              : mesh_.owner()[facei];
-            d = C[cellj] - C[celli];
-        }
-        else
-        {
-            const label patchi = mesh_.boundaryMesh().whichPatch(facei);
-            const fvPatch& fp = mesh_.boundary()[patchi];
-            if (isA<emptyFvPatch>(fp))
-            {
-                continue;
-            }
-            face = labelPair(patchi, facei - fp.start());
-            d =
-                fp.coupled()
-              ? coupledDeltas_[patchi][face.second()]
-              : fp.Cf()[face.second()] - C[celli];
-        }
-        const scalar c = (d & e)/mag(d);
-        if (c > bestCos)
-        {
-            bestCos = c;
-            nbrCell = cellj;
-            nbrFace = face;
-            delta = d;
-            found = true;
-        }
-    }
-    return found;
-}
-
-
 void Foam::fv::rigidProjection::restrictForce()
 {
     const dlmParticleCloud& cloud =
@@ -1128,7 +427,7 @@ void Foam::fv::rigidProjection::restrictForce()
     boolList forced(mesh_.nCells(), false);
     forAll(particles, i)
     {
-        for (const label celli : regionCells_[i])
+        for (const label celli : regions_.cells()[i])
         {
             forced[celli] = true;
         }
@@ -1146,7 +445,7 @@ void Foam::fv::rigidProjection::restrictForce()
     {
         scalar* s = &sums[nRestrictSums*i];
         const point& X = particles[i].position();
-        for (const label celli : regionCells_[i])
+        for (const label celli : regions_.cells()[i])
         {
             const scalar m = rho[celli]*V[celli];
             const vector r(C[celli] - X);
@@ -1183,7 +482,7 @@ void Foam::fv::rigidProjection::restrictForce()
         );
 
         const point& X = particles[i].position();
-        for (const label celli : regionCells_[i])
+        for (const label celli : regions_.cells()[i])
         {
             f[celli] -= rho[celli]*(a + (beta ^ (C[celli] - X)));
         }
@@ -1221,17 +520,6 @@ Foam::fv::rigidProjection::rigidProjection
     ),
     heldForce_(force_.primitiveField()),
     holdRate_(mesh.nCells(), Zero),
-    inside_(mesh.nCells(), false),
-    regionOwner_(mesh.nCells(), -1),
-    insideOf_(mesh.nCells(), -1),
-    insideAcross_(mesh.nBoundaryFaces(), -1),
-    insideSecondLayer_(mesh.nBoundaryFaces(), -1),
-    nextTo_(mesh.nCells(), -1),
-    nextToAcross_(mesh.nBoundaryFaces(), -1),
-    nextToSecondLayer_(mesh.nBoundaryFaces(), -1),
-    leftToFlow_(mesh.nCells(), 0),
-    leftToFlowAcross_(mesh.nBoundaryFaces(), 0),
-    leftToFlowSecondLayer_(mesh.nBoundaryFaces(), 0),
     blendingFactor_
     (
         IOobject
@@ -1245,69 +533,13 @@ Foam::fv::rigidProjection::rigidProjection
         mesh,
         dimensionedScalar("one", dimless, 1)
     ),
-    coupledDeltas_(mesh.boundary().size()),
-    secondLayerCell_(mesh.nBoundaryFaces(), -1),
-    secondLayerDelta_(mesh.nBoundaryFaces(), Zero),
-    secondLayerAcross_(mesh.nBoundaryFaces(), false),
+    regions_(mesh),
     regionMoves_(-1),
     ddtRate_(0),
     ddtRateTimeIndex_(-1)
 {
     fieldNames_.setSize(1, "U");
     applied_.setSize(1, false);
-
-    forAll(mesh.boundary(), patchi)
-    {
-        if (mesh.boundary()[patchi].coupled())
-        {
-            coupledDeltas_.set
-            (
-                patchi,
-                new vectorField(mesh.boundary()[patchi].delta())
-            );
-        }
-    }
-
-    // The cell behind each boundary face's cell, along the inward normal,
-    // and its offset; the offsets of the other side of coupled faces
-    const vectorField& C = mesh.C();
-    forAll(secondLayerCell_, bFacei)
-    {
-        const label facei = mesh.nInternalFaces() + bFacei;
-        const label celli = mesh.faceOwner()[facei];
-        const vector inward(-mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]));
-        scalar bestCos = 0.9;
-        for (const label facej : mesh.cells()[celli])
-        {
-            if (!mesh.isInternalFace(facej))
-            {
-                continue;
-            }
-            const label cellj =
-                mesh.faceOwner()[facej] == celli
-              ? mesh.faceNeighbour()[facej]
-              : mesh.faceOwner()[facej];
-            const vector d(C[cellj] - C[celli]);
-            const scalar c = (d & inward)/mag(d);
-            if (c > bestCos)
-            {
-                bestCos = c;
-                secondLayerCell_[bFacei] = cellj;
-                secondLayerDelta_[bFacei] = d;
-            }
-        }
-    }
-    syncTools::swapBoundaryFaceList(mesh, secondLayerDelta_);
-    labelList hasSecondLayer(mesh.nBoundaryFaces());
-    forAll(hasSecondLayer, bFacei)
-    {
-        hasSecondLayer[bFacei] = secondLayerCell_[bFacei] >= 0 ? 1 : 0;
-    }
-    syncTools::swapBoundaryFaceList(mesh, hasSecondLayer);
-    forAll(hasSecondLayer, bFacei)
-    {
-        secondLayerAcross_[bFacei] = hasSecondLayer[bFacei] > 0;
-    }
 
     if (mesh.foundObject<dlmParticleCloud>("particles"))
     {
@@ -1460,9 +692,9 @@ void Foam::fv::rigidProjection::constrain
         {
             continue;
         }
-        for (const label celli : regionCells_[i])
+        for (const label celli : regions_.cells()[i])
         {
-            if (insideOf_[celli] >= 0)
+            if (regions_.insideOf()[celli] >= 0)
             {
                 const scalar c = implicitHold_*offDiagonal[celli];
                 eqn.diag()[celli] += c;
@@ -1572,11 +804,11 @@ void Foam::fv::rigidProjection::followParticles
                 continue;
             }
             changed = true;
-            const DynamicList<label>& cells = regionCells_[i];
+            const DynamicList<label>& cells = regions_.cells()[i];
             forAll(cells, k)
             {
                 change[cells[k]] +=
-                    regionWeights_[i][k]*dU + (dOmega ^ regionArms_[i][k]);
+                    regions_.weights()[i][k]*dU + (dOmega ^ regions_.arms()[i][k]);
             }
         }
     }
@@ -1668,16 +900,16 @@ void Foam::fv::rigidProjection::holdRigid
     if (mixedCells_ == mixedCellsType::interpolated)
     {
         updateRegions();
-        const List<vectorField> sampled(sampledVelocities(U));
+        const List<vectorField> sampled(regions_.sampledVelocities(U));
         forAll(particles, i)
         {
             const dlmParticle& p = particles[i];
-            const DynamicList<label>& cells = regionCells_[i];
+            const DynamicList<label>& cells = regions_.cells()[i];
             forAll(cells, k)
             {
                 u[cells[k]] =
-                    regionWeights_[i][k]*p.velocity()
-                  + (p.angularVelocity() ^ regionArms_[i][k])
+                    regions_.weights()[i][k]*p.velocity()
+                  + (p.angularVelocity() ^ regions_.arms()[i][k])
                   + sampled[i][k];
                 held[cells[k]] = 1;
             }
@@ -1708,86 +940,6 @@ void Foam::fv::rigidProjection::holdRigid
 }
 
 
-Foam::List<Foam::vectorField>
-Foam::fv::rigidProjection::sampledVelocities(const volVectorField& U) const
-{
-    const vectorField& u = U.primitiveField();
-
-    // Values across coupled faces, fetched once per patch
-    PtrList<vectorField> neighbourValues(mesh_.boundary().size());
-    // Second-layer values across coupled faces: each side sends the value
-    // of the cell behind each of its coupled faces
-    vectorField secondLayerU(mesh_.nBoundaryFaces(), Zero);
-    forAll(secondLayerU, bFacei)
-    {
-        if (secondLayerCell_[bFacei] >= 0)
-        {
-            secondLayerU[bFacei] = u[secondLayerCell_[bFacei]];
-        }
-    }
-    syncTools::swapBoundaryFaceList(mesh_, secondLayerU);
-
-    auto sampleValue = [&](const label i, const label k) -> vector
-    {
-        const label celli = sampleCells_[i][k];
-        if (celli >= 0)
-        {
-            return u[celli];
-        }
-        const labelPair& face = sampleFaces_[i][k];
-        if (celli == secondLayerSample)
-        {
-            return secondLayerU
-            [
-                mesh_.boundary()[face.first()].start() + face.second()
-              - mesh_.nInternalFaces()
-            ];
-        }
-        const fvPatchVectorField& pf = U.boundaryField()[face.first()];
-        if (pf.coupled())
-        {
-            if (!neighbourValues.set(face.first()))
-            {
-                neighbourValues.set
-                (
-                    face.first(),
-                    pf.patchNeighbourField().ptr()
-                );
-            }
-            return neighbourValues[face.first()][face.second()];
-        }
-        return pf[face.second()];
-    };
-
-    // Velocity of the samples of forced cell k of particle i, as weighted
-    auto sampledVelocity = [&](const label i, const label k) -> vector
-    {
-        vector sum(Zero);
-        for
-        (
-            label s = sampleStarts_[i][k];
-            s < sampleStarts_[i][k + 1];
-            ++s
-        )
-        {
-            sum += sampleCoeffs_[i][s]*sampleValue(i, s);
-        }
-        return sum;
-    };
-
-    List<vectorField> sampled(regionCells_.size());
-    forAll(sampled, i)
-    {
-        sampled[i].setSize(regionCells_[i].size());
-        forAll(sampled[i], k)
-        {
-            sampled[i][k] = sampledVelocity(i, k);
-        }
-    }
-    return sampled;
-}
-
-
 void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
 {
     dlmParticleCloud& cloud =
@@ -1807,7 +959,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
     const bool twoD = cloud.twoD();
 
     // Velocity of the samples of each forced cell
-    const List<vectorField> sampled(sampledVelocities(U));
+    const List<vectorField> sampled(regions_.sampledVelocities(U));
 
     // Target velocity of forced cell k of particle i for rigid motion
     // (Up, omega)
@@ -1820,8 +972,8 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
     ) -> vector
     {
         return
-            regionWeights_[i][k]*Up
-          + (omega ^ regionArms_[i][k])
+            regions_.weights()[i][k]*Up
+          + (omega ^ regions_.arms()[i][k])
           + sampled[i][k];
     };
 
@@ -1831,7 +983,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         const point& X = particles[i].position();
         scalar* s = &sums[nVelocitySums*i];
 
-        const DynamicList<label>& cells = regionCells_[i];
+        const DynamicList<label>& cells = regions_.cells()[i];
         forAll(cells, k)
         {
             const label celli = cells[k];
@@ -1940,7 +1092,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
         }
         p.setLoads(F, T);
 
-        const DynamicList<label>& cells = regionCells_[i];
+        const DynamicList<label>& cells = regions_.cells()[i];
         targets[i].setSize(cells.size());
         forAll(cells, k)
         {
@@ -1950,7 +1102,7 @@ void Foam::fv::rigidProjection::correctInterpolated(volVectorField& U)
 
     forAll(particles, i)
     {
-        const DynamicList<label>& cells = regionCells_[i];
+        const DynamicList<label>& cells = regions_.cells()[i];
         forAll(cells, k)
         {
             const label celli = cells[k];
