@@ -220,6 +220,39 @@ void Foam::dlmParticleCloud::checkParticles()
                 << " shape such as sphere." << exit(FatalError);
         }
 
+        // Until contacts and output know other shapes, a particle that is
+        // not round would be taken as the sphere (disk) of its bounding
+        // radius: in contact with walls and particles (depth, normal,
+        // contact point, lubrication) and when drawn from the VTK file
+        if (!p.shape().round())
+        {
+            if
+            (
+                properties_.found("contact")
+             && properties_.subDict("contact").getOrDefault<bool>
+                (
+                    "active",
+                    true
+                )
+            )
+            {
+                FatalIOErrorInFunction(properties_.subDict("contact"))
+                    << "Particle " << p.name() << " has shape "
+                    << p.shape().type() << ", but contacts (walls, overlaps,"
+                    << " lubrication) are implemented for round shapes"
+                    << " (sphere, disk) only: they would take it as the"
+                    << " sphere of its bounding radius. Use 'active false'"
+                    << " in the contact settings." << exit(FatalIOError);
+            }
+            FatalIOErrorInFunction(properties_)
+                << "Particle " << p.name() << " has shape "
+                << p.shape().type() << ", but the particle output"
+                << " (VTK/particles, a point with a 'diameter' for a sphere"
+                << " glyph) draws round shapes (sphere, disk) only: it would"
+                << " show the sphere of its bounding radius. Non-round shapes"
+                << " are not yet available to the solver." << exit(FatalIOError);
+        }
+
         label celli = findCell(p.position());
         reduce(celli, maxOp<label>());
         if (celli < 0)

@@ -1,0 +1,203 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "box.H"
+#include "cutCellFraction.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace particleShapes
+{
+    defineTypeNameAndDebug(box, 0);
+    addToRunTimeSelectionTable(particleShape, box, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleShapes::box::box(const vector& halfExtents)
+:
+    halfExtents_(halfExtents)
+{}
+
+
+Foam::particleShapes::box::box(const dictionary& dict)
+:
+    halfExtents_(dict.get<vector>("halfExtents"))
+{
+    if (cmptMin(halfExtents_) <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "halfExtents " << halfExtents_ << " of particle "
+            << dict.dictName() << " must all be positive"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::particleShapes::box::keywords() const
+{
+    return wordList({"halfExtents"});
+}
+
+
+Foam::label Foam::particleShapes::box::nDimensions() const
+{
+    return 3;
+}
+
+
+Foam::scalar Foam::particleShapes::box::boundingRadius() const
+{
+    return mag(halfExtents_);
+}
+
+
+Foam::scalar Foam::particleShapes::box::volume() const
+{
+    return 8*cmptProduct(halfExtents_);
+}
+
+
+Foam::symmTensor Foam::particleShapes::box::inertiaPerUnitDensity() const
+{
+    const vector h2(cmptMultiply(halfExtents_, halfExtents_));
+    const scalar V3 = volume()/3;
+    return symmTensor
+    (
+        V3*(h2.y() + h2.z()), 0, 0,
+        V3*(h2.x() + h2.z()), 0,
+        V3*(h2.x() + h2.y())
+    );
+}
+
+
+Foam::scalar Foam::particleShapes::box::signedDistance
+(
+    const vector& r,
+    vector& normal
+) const
+{
+    const vector sign
+    (
+        r.x() < 0 ? -1 : 1,
+        r.y() < 0 ? -1 : 1,
+        r.z() < 0 ? -1 : 1
+    );
+    // Beyond each pair of faces (positive outside them)
+    const vector q(cmptMag(r) - halfExtents_);
+    const vector beyond(max(q, vector::zero));
+    const scalar outside = mag(beyond);
+    if (outside > 0)
+    {
+        // Nearest a face, an edge or a corner
+        normal = cmptMultiply(sign, beyond)/outside;
+        return outside;
+    }
+
+    // Inside: nearest the face least deep below
+    const direction nearest =
+        q.x() >= q.y()
+      ? (q.x() >= q.z() ? 0 : 2)
+      : (q.y() >= q.z() ? 1 : 2);
+    normal = Zero;
+    normal[nearest] = sign[nearest];
+    return q[nearest];
+}
+
+
+Foam::scalar Foam::particleShapes::box::surfaceCrossing
+(
+    const vector& r0,
+    const vector& e,
+    const scalar L
+) const
+{
+    // Entering the solid is entering the slabs of all three pairs of faces:
+    // the latest of the three entries
+    scalar t = 0;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (mag(e[d]) > SMALL)
+        {
+            const scalar t1 = (-halfExtents_[d] - r0[d])/e[d];
+            const scalar t2 = (halfExtents_[d] - r0[d])/e[d];
+            t = max(t, min(t1, t2));
+        }
+    }
+    return min(t, L);
+}
+
+
+Foam::scalar Foam::particleShapes::box::boxFraction
+(
+    const boundBox& bb,
+    const point& X,
+    const tensor& R,
+    const vector& splitDirections,
+    const scalar leafSize
+) const
+{
+    // Axes along the mesh axes: each row of R, a unit vector, then holds a
+    // single +-1, and only then do its components' magnitudes sum to 1
+    const tensor magR(cmptMag(R));
+    const vector rowSums
+    (
+        magR.xx() + magR.xy() + magR.xz(),
+        magR.yx() + magR.yy() + magR.yz(),
+        magR.zx() + magR.zy() + magR.zz()
+    );
+    if (cmptMax(cmptMag(rowSums - vector::one)) > 1e-12)
+    {
+        return particleShape::boxFraction
+        (
+            bb, X, R, splitDirections, leafSize
+        );
+    }
+
+    const vector H(magR & halfExtents_);
+    const vector lo(bb.min() - X);
+    const vector hi(bb.max() - X);
+    scalar fraction = 1;
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalar overlap = min(hi[d], H[d]) - max(lo[d], -H[d]);
+        if (overlap <= 0)
+        {
+            return 0;
+        }
+        fraction *= overlap/(hi[d] - lo[d]);
+    }
+    return fraction;
+}
+
+
+Foam::scalar Foam::particleShapes::box::planeOverlap
+(
+    const vector& n,
+    const scalar distance
+) const
+{
+    // The part beyond the plane is the part below the plane of normal -n
+    // at the centroid's distance
+    return volume()*cutCellFraction::box(-n, distance, 2*halfExtents_);
+}
+
+
+void Foam::particleShapes::box::write(Ostream& os) const
+{
+    os.writeEntry("shape", typeName);
+    os.writeEntry("halfExtents", halfExtents_);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,164 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "cylinder.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace particleShapes
+{
+    defineTypeNameAndDebug(cylinder, 0);
+    addToRunTimeSelectionTable(particleShape, cylinder, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleShapes::cylinder::cylinder
+(
+    const scalar radius,
+    const scalar length
+)
+:
+    radius_(radius),
+    length_(length)
+{}
+
+
+Foam::particleShapes::cylinder::cylinder(const dictionary& dict)
+:
+    radius_(dict.get<scalar>("radius")),
+    length_(dict.get<scalar>("length"))
+{
+    if (radius_ <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "radius " << radius_ << " of particle " << dict.dictName()
+            << " must be positive" << exit(FatalIOError);
+    }
+    if (length_ <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "length " << length_ << " of particle " << dict.dictName()
+            << " must be positive" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::particleShapes::cylinder::keywords() const
+{
+    return wordList({"radius", "length"});
+}
+
+
+Foam::label Foam::particleShapes::cylinder::nDimensions() const
+{
+    return 3;
+}
+
+
+Foam::scalar Foam::particleShapes::cylinder::boundingRadius() const
+{
+    return Foam::sqrt(sqr(radius_) + sqr(0.5*length_));
+}
+
+
+Foam::scalar Foam::particleShapes::cylinder::volume() const
+{
+    return constant::mathematical::pi*sqr(radius_)*length_;
+}
+
+
+Foam::symmTensor Foam::particleShapes::cylinder::inertiaPerUnitDensity() const
+{
+    const scalar V = volume();
+    const scalar transverse = V*(3*sqr(radius_) + sqr(length_))/12;
+    return symmTensor(transverse, 0, 0, transverse, 0, 0.5*V*sqr(radius_));
+}
+
+
+Foam::scalar Foam::particleShapes::cylinder::signedDistance
+(
+    const vector& r,
+    vector& normal
+) const
+{
+    const scalar rho = Foam::sqrt(sqr(r.x()) + sqr(r.y()));
+    const vector radial
+    (
+        rho > VSMALL ? vector(r.x()/rho, r.y()/rho, 0) : vector(1, 0, 0)
+    );
+    const vector axial(0, 0, r.z() < 0 ? -1 : 1);
+
+    // Beyond the mantle (dRadial > 0) and beyond an end (dAxial > 0)
+    const scalar dRadial = rho - radius_;
+    const scalar dAxial = mag(r.z()) - 0.5*length_;
+
+    if (dRadial > 0 && dAxial > 0)
+    {
+        // Nearest the rim
+        const scalar d = Foam::sqrt(sqr(dRadial) + sqr(dAxial));
+        normal = (dRadial*radial + dAxial*axial)/d;
+        return d;
+    }
+    if (dRadial > dAxial)
+    {
+        normal = radial;
+        return dRadial;
+    }
+    normal = axial;
+    return dAxial;
+}
+
+
+Foam::scalar Foam::particleShapes::cylinder::surfaceCrossing
+(
+    const vector& r0,
+    const vector& e,
+    const scalar L
+) const
+{
+    // Entering the solid is entering both the slab between the ends and
+    // the infinite cylinder: the later of the two entries
+    scalar t = 0;
+
+    if (mag(e.z()) > SMALL)
+    {
+        const scalar halfLength = 0.5*length_;
+        const scalar t1 = (-halfLength - r0.z())/e.z();
+        const scalar t2 = (halfLength - r0.z())/e.z();
+        t = max(t, min(t1, t2));
+    }
+
+    const scalar a = sqr(e.x()) + sqr(e.y());
+    if (a > SMALL)
+    {
+        const scalar b = (r0.x()*e.x() + r0.y()*e.y())/a;
+        const scalar c = (sqr(r0.x()) + sqr(r0.y()) - sqr(radius_))/a;
+        const scalar disc = max(sqr(b) - c, scalar(0));
+        t = max(t, -b - Foam::sqrt(disc));
+    }
+
+    return min(t, L);
+}
+
+
+void Foam::particleShapes::cylinder::write(Ostream& os) const
+{
+    os.writeEntry("shape", typeName);
+    os.writeEntry("radius", radius_);
+    os.writeEntry("length", length_);
+}
+
+
+// ************************************************************************* //
