@@ -4,7 +4,7 @@
   License: GNU General Public License v3 or later.
 \*---------------------------------------------------------------------------*/
 
-#include "cylinder.H"
+#include "solidCylinder.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -14,15 +14,15 @@ namespace Foam
 {
 namespace particleShapes
 {
-    defineTypeNameAndDebug(cylinder, 0);
-    addToRunTimeSelectionTable(particleShape, cylinder, dictionary);
+    defineTypeNameAndDebug(solidCylinder, 0);
+    addToRunTimeSelectionTable(particleShape, solidCylinder, dictionary);
 }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::particleShapes::cylinder::cylinder
+Foam::particleShapes::solidCylinder::solidCylinder
 (
     const scalar radius,
     const scalar length
@@ -33,7 +33,7 @@ Foam::particleShapes::cylinder::cylinder
 {}
 
 
-Foam::particleShapes::cylinder::cylinder(const dictionary& dict)
+Foam::particleShapes::solidCylinder::solidCylinder(const dictionary& dict)
 :
     radius_(dict.get<scalar>("radius")),
     length_(dict.get<scalar>("length"))
@@ -55,31 +55,31 @@ Foam::particleShapes::cylinder::cylinder(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleShapes::cylinder::keywords() const
+Foam::wordList Foam::particleShapes::solidCylinder::keywords() const
 {
     return wordList({"radius", "length"});
 }
 
 
-Foam::label Foam::particleShapes::cylinder::nDimensions() const
+Foam::label Foam::particleShapes::solidCylinder::nDimensions() const
 {
     return 3;
 }
 
 
-Foam::scalar Foam::particleShapes::cylinder::boundingRadius() const
+Foam::scalar Foam::particleShapes::solidCylinder::boundingRadius() const
 {
     return Foam::sqrt(sqr(radius_) + sqr(0.5*length_));
 }
 
 
-Foam::scalar Foam::particleShapes::cylinder::volume() const
+Foam::scalar Foam::particleShapes::solidCylinder::volume() const
 {
     return constant::mathematical::pi*sqr(radius_)*length_;
 }
 
 
-Foam::symmTensor Foam::particleShapes::cylinder::inertiaPerUnitDensity() const
+Foam::symmTensor Foam::particleShapes::solidCylinder::inertiaPerUnitDensity() const
 {
     const scalar V = volume();
     const scalar transverse = V*(3*sqr(radius_) + sqr(length_))/12;
@@ -87,7 +87,7 @@ Foam::symmTensor Foam::particleShapes::cylinder::inertiaPerUnitDensity() const
 }
 
 
-Foam::scalar Foam::particleShapes::cylinder::signedDistance
+Foam::scalar Foam::particleShapes::solidCylinder::signedDistance
 (
     const vector& r,
     vector& normal
@@ -121,7 +121,7 @@ Foam::scalar Foam::particleShapes::cylinder::signedDistance
 }
 
 
-Foam::scalar Foam::particleShapes::cylinder::surfaceCrossing
+Foam::scalar Foam::particleShapes::solidCylinder::surfaceCrossing
 (
     const vector& r0,
     const vector& e,
@@ -129,7 +129,7 @@ Foam::scalar Foam::particleShapes::cylinder::surfaceCrossing
 ) const
 {
     // Entering the solid is entering both the slab between the ends and
-    // the infinite cylinder: the later of the two entries
+    // the infinite solidCylinder: the later of the two entries
     scalar t = 0;
 
     if (mag(e.z()) > SMALL)
@@ -153,7 +153,7 @@ Foam::scalar Foam::particleShapes::cylinder::surfaceCrossing
 }
 
 
-void Foam::particleShapes::cylinder::write(Ostream& os) const
+void Foam::particleShapes::solidCylinder::write(Ostream& os) const
 {
     os.writeEntry("shape", typeName);
     os.writeEntry("radius", radius_);
