@@ -109,7 +109,7 @@ void Foam::forcedRegions::blendExcessMass()
     {
         const dlmParticle& p = cloud.particles()[i];
         const scalar excess = p.mixtureDensity(rhoFluid) - rhoFluid;
-        if (excess == 0)
+        if (excess <= 0)
         {
             continue;
         }
