@@ -14,6 +14,7 @@ Description
 
 #include "cutCellFraction.H"
 #include "particleShape.H"
+#include "shapeChecks.H"
 #include "dlmParticle.H"
 #include "Random.H"
 #include "mathematicalConstants.H"
@@ -312,33 +313,7 @@ TEST_CASE("line crossings agree with the general root finding", "[geometry]")
     for (const word type : {"sphere", "disk"})
     {
         autoPtr<particleShape> shape(makeShape(type, 0.6));
-        label nChecked = 0;
-        for (label sample = 0; sample < 200; ++sample)
-        {
-            // A point outside and a point inside, as for an interface cell
-            const vector r0(2*rnd.sample01<vector>() - vector::one);
-            const vector r1(0.5*(2*rnd.sample01<vector>() - vector::one));
-            vector normal;
-            if
-            (
-                shape->signedDistance(r0, normal) <= 0
-             || shape->signedDistance(r1, normal) >= 0
-            )
-            {
-                continue;
-            }
-            const scalar L = mag(r1 - r0);
-            const vector e((r1 - r0)/L);
-            INFO(type);
-            CHECK
-            (
-                shape->surfaceCrossing(r0, e, L)
-             == Approx(shape->particleShape::surfaceCrossing(r0, e, L))
-               .margin(1e-10)
-            );
-            ++nChecked;
-        }
-        CHECK(nChecked > 20);
+        shapeChecks::checkLineCrossings(shape(), rnd, 200);
     }
 }
 

@@ -15,6 +15,7 @@ Description
 #include <catch2/catch.hpp>
 
 #include "particleShape.H"
+#include "shapeChecks.H"
 #include "dlmParticle.H"
 #include "Random.H"
 #include "quaternion.H"
@@ -24,18 +25,10 @@ Description
 
 using namespace Foam;
 using constant::mathematical::pi;
+using shapeChecks::show;
 
 namespace
 {
-
-// Catch2 prints with std::ostream
-std::string show(const vector& v)
-{
-    OStringStream os;
-    os << v;
-    return os.str();
-}
-
 
 autoPtr<particleShape> makeShape(const string& entries)
 {
@@ -320,33 +313,7 @@ TEST_CASE("non-spherical line crossings agree with the general root finding", "[
     )
     {
         autoPtr<particleShape> shape(makeShape(entries));
-        label nChecked = 0;
-        for (label sample = 0; sample < 400; ++sample)
-        {
-            const vector r0(2*rnd.sample01<vector>() - vector::one);
-            const vector r1(0.5*(2*rnd.sample01<vector>() - vector::one));
-            vector normal;
-            if
-            (
-                shape->signedDistance(r0, normal) <= 0
-             || shape->signedDistance(r1, normal) >= 0
-            )
-            {
-                continue;
-            }
-            const scalar L = mag(r1 - r0);
-            const vector e((r1 - r0)/L);
-            const scalar t = shape->surfaceCrossing(r0, e, L);
-            INFO(shape->type() << " from " << show(r0) << " to " << show(r1));
-            CHECK(shape->signedDistance(r0 + t*e, normal) == Approx(0).margin(1e-12));
-            CHECK
-            (
-                t == Approx(shape->particleShape::surfaceCrossing(r0, e, L))
-               .margin(1e-10)
-            );
-            ++nChecked;
-        }
-        CHECK(nChecked > 20);
+        shapeChecks::checkLineCrossings(shape(), rnd, 400);
     }
 }
 

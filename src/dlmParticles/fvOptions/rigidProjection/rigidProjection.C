@@ -237,6 +237,17 @@ void Foam::fv::rigidProjection::followParticles
     const vectorField& C = mesh_.C();
     const vectorField& u = U.primitiveField();
 
+    // A fixed bed neither moves nor has contacts
+    bool allFixed = true;
+    for (const dlmParticle& p : particles)
+    {
+        allFixed = allFixed && p.motion() == dlmParticle::motionType::fixed;
+    }
+    if (allFixed)
+    {
+        return;
+    }
+
     volVectorField change
     (
         IOobject("rigidChange", mesh_.time().timeName(), mesh_),
