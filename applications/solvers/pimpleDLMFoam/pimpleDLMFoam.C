@@ -26,16 +26,16 @@ Description
        particle the impulse of its weight less its buoyancy;
     3. contacts, particle motion and new volume fractions
        (dlmParticleCloud);
-    4. the follow step: the cells of each moving particle where it now is
-       take its rigid motion (rigidProjection::followParticles), so that
-       the solid mass a particle moves into a cell carries the particle's
-       momentum, not the fluid's.
+    4. the follow step (rigidProjection::followParticles): the forced
+       cells take the contacts' change of the particles' velocities, and
+       the excess mass (rho_s - rho_f) phi a particle heavier than the fluid
+       moved into a cell carries the particle's momentum, not the fluid's.
 
     The convection term takes the fluid's density: the solid is carried by
     the particles' motion (step 4), not by the flux. With the mixture's
     density, the convection of the velocity jump across a heavy particle's
     surface cells acted on the solid's mass and braked a particle 1000
-    times as heavy as the fluid by 40 times its drag.
+    times as heavy as the fluid by tens of times its drag.
 
     The time step also keeps the viscous number nu deltaT/h^2 within
     maxViscousNumber (system/controlDict, default 1), where the projection
@@ -131,8 +131,8 @@ int main(int argc, char *argv[])
             }
         }
 
-        // Contacts, motion and new fractions; then the particles' cells
-        // where they now are take their rigid motion
+        // Contacts, motion and new fractions; then the flow takes the
+        // contacts' change and the solid mass moved into new cells
         particles.move();
         if (projection)
         {
