@@ -994,6 +994,19 @@ bool Foam::dlmParticleCloud::moving() const
 }
 
 
+bool Foam::dlmParticleCloud::allFixed() const
+{
+    for (const dlmParticle& p : particles_)
+    {
+        if (p.motion() != dlmParticle::motionType::fixed)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
 void Foam::dlmParticleCloud::setProjected()
 {
     projected_ = true;

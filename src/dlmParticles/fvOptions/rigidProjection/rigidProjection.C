@@ -238,12 +238,7 @@ void Foam::fv::rigidProjection::followParticles
     const vectorField& u = U.primitiveField();
 
     // A fixed bed neither moves nor has contacts
-    bool allFixed = true;
-    for (const dlmParticle& p : particles)
-    {
-        allFixed = allFixed && p.motion() == dlmParticle::motionType::fixed;
-    }
-    if (allFixed)
+    if (cloud.allFixed())
     {
         return;
     }

@@ -176,12 +176,7 @@ void Foam::fv::interpolated::updateRegions()
 
     // Fixed particles alone (a fixed bed) keep their cells and sums: found
     // at the first step only
-    bool allFixed = true;
-    for (const dlmParticle& p : cloud.particles())
-    {
-        allFixed = allFixed && p.motion() == dlmParticle::motionType::fixed;
-    }
-    if (regionMoves_ >= 0 && allFixed)
+    if (regionMoves_ >= 0 && cloud.allFixed())
     {
         regionMoves_ = cloud.nMoves();
         return;
