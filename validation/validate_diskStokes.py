@@ -12,8 +12,10 @@ The velocity of a disk crossing the grid oscillates slightly with the period
 h/U (its cut cells change): it is averaged over one such period after the
 start-up. Writes results/diskStokes.csv and results/diskStokes.png.
 
-    validation/validate_diskStokes.py [--mixed-cells a,b] [N ...]
-        (default: all three treatments, N = 8 12 16)
+    validation/validate_diskStokes.py [--mixed-cells a,b]
+        [--viscous-number V] [--correctors C] [N ...]
+        (default: all three treatments, V = 2.4, the tutorial's correctors,
+        N = 8 12 16)
 """
 
 import argparse
@@ -48,8 +50,8 @@ boundary
 """
 
 
-def run(cells_per_diameter, mixed_cells, env):
-    name = f"diskStokes_{mixed_cells}_{cells_per_diameter}"
+def run(cells_per_diameter, mixed_cells, viscous_number, correctors, env):
+    name = f"diskStokes_{mixed_cells}_{cells_per_diameter}_vn{viscous_number:g}"
     case = Case.copy(ROOT / "tutorials" / "fallingDisk", RUNS / name, env)
     nx = round(WIDTH/(2*A)*cells_per_diameter)
     (case.path / "system" / "blockMeshDict").write_text(
@@ -59,12 +61,14 @@ def run(cells_per_diameter, mixed_cells, env):
              f"({WIDTH/2} {HEIGHT/2} 0)")
     case.set("system/fvOptions", "rigidProjection/mixedCells", mixed_cells)
     h = 2*A/cells_per_diameter
-    delta_t = VISCOUS_NUMBER*h**2/(MU/RHO_F)
+    delta_t = viscous_number*h**2/(MU/RHO_F)
     end_time = START_UP + h/U_T
     for entry, value in [("endTime", end_time), ("deltaT", delta_t),
                          ("adjustTimeStep", "no"), ("writeInterval", end_time),
-                         ("maxViscousNumber", 2*VISCOUS_NUMBER)]:
+                         ("maxViscousNumber", 2*viscous_number)]:
         case.set("system/controlDict", entry, value)
+    if correctors:
+        case.set("system/fvSolution", "PIMPLE/nCorrectors", correctors)
     case.run("blockMesh")
     seconds = timed_run(case, "pimpleDLMFoam")
     history = case.history()["disk"]
@@ -77,6 +81,9 @@ def run(cells_per_diameter, mixed_cells, env):
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--mixed-cells", default=",".join(MIXED_CELLS))
+    parser.add_argument("--viscous-number", type=float, default=VISCOUS_NUMBER)
+    parser.add_argument("--correctors", type=int, default=0,
+                        help="PIMPLE nCorrectors (default: the tutorial's)")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16])
     args = parser.parse_args()
     env = foam_environment()
@@ -88,34 +95,38 @@ def main():
         for line in table.read_text().splitlines()[1:]:
             v = line.split(",")
             rows.append([v[0], int(v[1])] + [float(x) for x in v[2:]])
+    vn = args.viscous_number
     for mixed_cells in args.mixed_cells.split(","):
         for n in args.resolutions:
-            rows = [r for r in rows if (r[0], r[1]) != (mixed_cells, n)]
-            velocity, seconds, oscillation, steps = run(n, mixed_cells, env)
+            rows = [r for r in rows if (r[0], r[1], r[8]) != (mixed_cells, n, vn)]
+            velocity, seconds, oscillation, steps = run(
+                n, mixed_cells, vn, args.correctors, env)
             error = velocity/U_T - 1
             rows.append([mixed_cells, n, velocity, U_T, error, seconds, steps,
-                         oscillation])
-            print(f"{mixed_cells:15s} N={n:3d} U={velocity:.6e} U_t={U_T:.6e} "
-                  f"error={100*error:+.3f}% wall={seconds:.1f}s steps={steps} "
-                  f"oscillation={100*oscillation:.3f}%", flush=True)
-            rows.sort(key=lambda r: (MIXED_CELLS.index(r[0]), r[1]))
+                         oscillation, vn])
+            print(f"{mixed_cells:15s} N={n:3d} nu dt/h^2={vn:g} U={velocity:.6e} "
+                  f"U_t={U_T:.6e} error={100*error:+.3f}% wall={seconds:.1f}s "
+                  f"steps={steps} oscillation={100*oscillation:.3f}%", flush=True)
+            rows.sort(key=lambda r: (MIXED_CELLS.index(r[0]), r[8], r[1]))
             write_table(table,
                         ["mixedCells", "cellsPerDiameter", "U", "U_t", "relError",
-                         "wallTime_s", "steps", "oscillation"], rows)
+                         "wallTime_s", "steps", "oscillation", "viscousNumber"],
+                        rows)
 
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
     series = {}
-    for mixed_cells in dict.fromkeys(r[0] for r in rows):
-        sel = [r for r in rows if r[0] == mixed_cells]
+    for mixed_cells, vn in dict.fromkeys((r[0], r[8]) for r in rows):
+        sel = [r for r in rows if (r[0], r[8]) == (mixed_cells, vn)]
+        label = f"{mixed_cells}, nu dt/h^2 {vn:g}"
         n = np.array([r[1] for r in sel], float)
         err = np.abs([r[4] for r in sel])
         order = observed_order(1/n[-3:], err[-3:]) if len(n) >= 3 else float("nan")
-        print(f"{mixed_cells}: observed order (3 finest) {order:.2f}")
-        ax1.loglog(n, 100*err, "o-", label=f"{mixed_cells} (order {order:.2f})")
-        series[mixed_cells] = [(r[5], abs(r[4]), r[1]) for r in sel]
+        print(f"{label}: observed order (3 finest) {order:.2f}")
+        ax1.loglog(n, 100*err, "o-", label=f"{label} (order {order:.2f})")
+        series[label] = [(r[5], abs(r[4]), r[1]) for r in sel]
     ax1.axhline(1, color="k", ls="--", lw=0.8, label="target 1 % at N = 16")
     ax1.set_xlabel("cells per diameter")
     ax1.set_ylabel("|U/U_t - 1| [%]")

@@ -40,14 +40,12 @@ namespace
         nGeometricSums = 24
     };
 
-    // and sums of the velocity and the held force, at each correction
+    // and sums of the velocity, at each correction
     enum velocitySumIndex
     {
         vB1 = 0,            // sum m (u - u_samples) (3)
         vB2 = 3,            // sum m r x (u - u_samples) (3)
-        vForce = 6,         // sum V f (3)
-        vTorque = 9,        // sum V r x f (3)
-        nVelocitySums = 12
+        nVelocitySums = 6
     };
 
     // Layout of the sums that remove the net force of the carried force
@@ -334,25 +332,6 @@ void Foam::fv::interpolated::restrictForce()
 }
 
 
-Foam::scalar Foam::fv::interpolated::ddtRate(const volVectorField& U)
-{
-    const label timeIndex = mesh_.time().timeIndex();
-    if (ddtRateTimeIndex_ != timeIndex)
-    {
-        // Every processor takes the same value, also one without cells
-        ddtRate_ = 0;
-        if (mesh_.nCells() > 0)
-        {
-            tmp<fvVectorMatrix> ddtU(fvm::ddt(U));
-            ddtRate_ = ddtU().diag()[0]/mesh_.V()[0];
-        }
-        reduce(ddtRate_, maxOp<scalar>());
-        ddtRateTimeIndex_ = timeIndex;
-    }
-    return ddtRate_;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fv::interpolated::interpolated
@@ -395,9 +374,7 @@ Foam::fv::interpolated::interpolated
         dimensionedScalar("one", dimless, 1)
     ),
     regions_(mesh),
-    regionMoves_(-1),
-    ddtRate_(0),
-    ddtRateTimeIndex_(-1)
+    regionMoves_(-1)
 {}
 
 
@@ -445,6 +422,10 @@ bool Foam::fv::interpolated::predictsContacts() const
 
 void Foam::fv::interpolated::constrain(fvMatrix<vector>& eqn)
 {
+    updateRegions();
+    momentum_.reset(new fvMatrix<vector>(eqn));
+
+    holdRate_ = 0;
     if (implicitHold_ <= 0)
     {
         return;
@@ -456,7 +437,6 @@ void Foam::fv::interpolated::constrain(fvMatrix<vector>& eqn)
     // time step
     const dlmParticleCloud& cloud =
         mesh_.lookupObject<dlmParticleCloud>("particles");
-    holdRate_ = 0;
     scalarField offDiagonal(mesh_.nCells(), Zero);
     eqn.sumMagOffDiag(offDiagonal);
     forAll(eqn.psi().boundaryField(), patchi)
@@ -497,6 +477,15 @@ void Foam::fv::interpolated::correct(volVectorField& U)
 {
     updateRegions();
 
+    if (!momentum_.valid())
+    {
+        FatalErrorInFunction
+            << "fvOption " << optionName_ << ": the velocity is projected"
+            << " before the momentum equation was constrained" << nl
+            << "    (the solver must call fvOptions.constrain(UEqn) before"
+            << " fvOptions.correct(U))" << exit(FatalError);
+    }
+
     dlmParticleCloud& cloud =
         mesh_.lookupObjectRef<dlmParticleCloud>("particles");
     PtrList<dlmParticle>& particles = cloud.particles();
@@ -510,7 +499,6 @@ void Foam::fv::interpolated::correct(volVectorField& U)
     const vector gravity(mixedCellTreatment::gravity(mesh_));
     const scalar rhoFluid = cloud.rhoFluid().value();
     const scalar deltaT = mesh_.time().deltaTValue();
-    const scalar ddtRate = this->ddtRate(U);
     const bool twoD = cloud.twoD();
 
     // Velocity of the samples of each forced cell
@@ -545,34 +533,32 @@ void Foam::fv::interpolated::correct(volVectorField& U)
             const scalar m = rho[celli]*V[celli];
             const vector r(C[celli] - X);
             const vector d(u[celli] - sampled[i][k]);
-            const vector& f = heldForce_[celli];
 
             addVector(s + vB1, m*d);
             addVector(s + vB2, m*(r ^ d));
-            addVector(s + vForce, V[celli]*f);
-            addVector(s + vTorque, V[celli]*(r ^ f));
-
-            // The implicitly held cells' part of this correction's change
-            // (a held particle's velocity, and so its target, is known)
-            if (holdRate_[celli] > 0)
-            {
-                const dlmParticle& p = particles[i];
-                const vector df
-                (
-                    forceRelaxation_*holdRate_[celli]
-                   *(target(i, k, p.velocity(), p.angularVelocity()) - u[celli])
-                );
-                addVector(s + vForce, V[celli]*df);
-                addVector(s + vTorque, V[celli]*(r ^ df));
-            }
         }
     }
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
     Pstream::listCombineScatter(sums);
 
+    // The free particles' velocities from the momentum balance, and the
+    // error of each forced cell against its target (zero elsewhere).
     // Targets from the provisional velocity first: samples may be forced
     // cells of another particle
-    List<vectorField> targets(particles.size());
+    volVectorField error
+    (
+        IOobject
+        (
+            "rigidError",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        U
+    );
+    error.primitiveFieldRef() = Zero;
     projectedVelocity_.setSize(particles.size());
     projectedOmega_.setSize(particles.size());
     forAll(particles, i)
@@ -588,57 +574,116 @@ void Foam::fv::interpolated::correct(volVectorField& U)
             failUncovered(p, "cell centre");
         }
 
-        const tensor A11(g[gA11]*tensor::I);
-        const tensor A12(-crossMatrix(sumVector(g + gMq)));
-        const tensor A21(crossMatrix(sumVector(g + gMar)));
-        const tensor A22(sumTensor(g + gA22));
-        const vector b1(sumVector(s + vB1));
-        const vector b2(sumVector(s + vB2));
-
         if (p.isFree())
         {
             vector Up, omega;
-            solveRigid(A11, A12, A21, A22, b1, b2, twoD, Up, omega);
+            solveRigid
+            (
+                g[gA11]*tensor::I,
+                -crossMatrix(sumVector(g + gMq)),
+                crossMatrix(sumVector(g + gMar)),
+                sumTensor(g + gA22),
+                sumVector(s + vB1),
+                sumVector(s + vB2),
+                twoD,
+                Up,
+                omega
+            );
             p.setVelocities(Up, omega);
         }
         projectedVelocity_[i] = p.velocity();
         projectedOmega_[i] = p.angularVelocity();
 
-        const vector& Up = p.velocity();
-        const vector& omega = p.angularVelocity();
+        const DynamicList<label>& cells = regions_.cells()[i];
+        forAll(cells, k)
+        {
+            error[cells[k]] =
+                target(i, k, p.velocity(), p.angularVelocity()) - u[cells[k]];
+        }
+    }
+    error.correctBoundaryConditions();
+
+    // The force that would have made this solution the targets: the
+    // momentum equation's operator applied to the error (extended by zero),
+    // and the implicit hold's force, which acted in this solution
+    const vectorField change(forcingChange(error));
+    forAll(particles, i)
+    {
+        for (const label celli : regions_.cells()[i])
+        {
+            f[celli] = heldForce_[celli] + forceRelaxation_*change[celli];
+            u[celli] += error[celli];
+        }
+    }
+
+    // The force is internal to a free particle's mixture
+    restrictForce();
+
+    setLoads(gravity, rhoFluid, deltaT, twoD);
+}
+
+
+void Foam::fv::interpolated::setLoads
+(
+    const vector& gravity,
+    const scalar rhoFluid,
+    const scalar deltaT,
+    const bool twoD
+)
+{
+    dlmParticleCloud& cloud =
+        mesh_.lookupObjectRef<dlmParticleCloud>("particles");
+    PtrList<dlmParticle>& particles = cloud.particles();
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const vectorField& f = force_.primitiveField();
+
+    // The force holding each held particle
+    scalarList holdSums(6*particles.size(), Zero);
+    forAll(particles, i)
+    {
+        if (particles[i].isFree())
+        {
+            continue;
+        }
+        const point& X = particles[i].position();
+        scalar* s = &holdSums[6*i];
+        for (const label celli : regions_.cells()[i])
+        {
+            addVector(s, V[celli]*f[celli]);
+            addVector(s + 3, V[celli]*((C[celli] - X) ^ f[celli]));
+        }
+    }
+    Pstream::listCombineGather(holdSums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(holdSums);
+
+    forAll(particles, i)
+    {
+        dlmParticle& p = particles[i];
+        const scalar* g = &geometricSums_[nGeometricSums*i];
         const scalar M = g[gMass];
         symmTensor I;
         for (direction d = 0; d < 6; ++d)
         {
             I[d] = g[gInertia + d];
         }
+        const vector dOmega(p.angularVelocity() - p.angularVelocity0());
 
         vector F, T;
         if (p.isFree())
         {
-            F = M*(Up - p.velocity0())/deltaT - p.density()*g[gVolume]*gravity;
-            T = (I & (omega - p.angularVelocity0()))/deltaT;
+            F =
+                M*(p.velocity() - p.velocity0())/deltaT
+              - p.density()*g[gVolume]*gravity;
+            T = (I & dOmega)/deltaT;
         }
         else
         {
-            // Force holding the particle: the carried force and this
-            // correction's change, (A x - b) ddtRate and the held cells'
-            // part
-            const vector holdForce
-            (
-                sumVector(s + vForce)
-              + forceRelaxation_*ddtRate*((A11 & Up) + (A12 & omega) - b1)
-            );
-            const vector holdTorque
-            (
-                sumVector(s + vTorque)
-              + forceRelaxation_*ddtRate*((A21 & Up) + (A22 & omega) - b2)
-            );
             F =
-                g[gA11]*(Up - p.velocity0())/deltaT
-              - holdForce
+                g[gA11]*(p.velocity() - p.velocity0())/deltaT
+              - sumVector(&holdSums[6*i])
               - rhoFluid*g[gVolume]*gravity;
-            T = (I & (omega - p.angularVelocity0()))/deltaT - holdTorque;
+            T = (I & dOmega)/deltaT - sumVector(&holdSums[6*i + 3]);
         }
         if (twoD)
         {
@@ -646,28 +691,59 @@ void Foam::fv::interpolated::correct(volVectorField& U)
             T = vector(0, 0, T.z());
         }
         p.setLoads(F, T);
-
-        const DynamicList<label>& cells = regions_.cells()[i];
-        targets[i].setSize(cells.size());
-        forAll(cells, k)
-        {
-            targets[i][k] = target(i, k, Up, omega);
-        }
     }
+}
 
-    forAll(particles, i)
+
+Foam::tmp<Foam::vectorField> Foam::fv::interpolated::forcingChange
+(
+    const volVectorField& error
+) const
+{
+    const fvMatrix<vector>& M = momentum_();
+    const vectorField& e = error.primitiveField();
+    const scalarField& V = mesh_.V();
+
+    tmp<vectorField> tchange(new vectorField(M.diag()*e + holdRate_*V*e));
+    vectorField& change = tchange.ref();
+
+    const labelUList& owner = M.lduAddr().lowerAddr();
+    const labelUList& neighbour = M.lduAddr().upperAddr();
+    if (M.hasUpper())
     {
-        const DynamicList<label>& cells = regions_.cells()[i];
-        forAll(cells, k)
+        const scalarField& upper = M.upper();
+        const scalarField& lower = M.hasLower() ? M.lower() : upper;
+        forAll(owner, facei)
         {
-            const label celli = cells[k];
-            f[celli] =
-                heldForce_[celli]
-              + forceRelaxation_*(rho[celli]*ddtRate + holdRate_[celli])
-               *(targets[i][k] - u[celli]);
-            u[celli] = targets[i][k];
+            change[owner[facei]] += upper[facei]*e[neighbour[facei]];
+            change[neighbour[facei]] += lower[facei]*e[owner[facei]];
         }
     }
+
+    forAll(error.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& pe = error.boundaryField()[patchi];
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        const vectorField& internal = M.internalCoeffs()[patchi];
+        forAll(faceCells, facei)
+        {
+            change[faceCells[facei]] +=
+                cmptMultiply(internal[facei], e[faceCells[facei]]);
+        }
+        if (pe.coupled())
+        {
+            const vectorField neighbourError(pe.patchNeighbourField());
+            const vectorField& coupling = M.boundaryCoeffs()[patchi];
+            forAll(faceCells, facei)
+            {
+                change[faceCells[facei]] -=
+                    cmptMultiply(coupling[facei], neighbourError[facei]);
+            }
+        }
+    }
+
+    change /= V;
+    return tchange;
 }
 
 
