@@ -68,7 +68,9 @@ Foam::dlmParticle::dlmParticle(const dictionary& dict)
     force_(dict.getOrDefault<vector>("force", Zero)),
     torque_(dict.getOrDefault<vector>("torque", Zero)),
     contactForce_(dict.getOrDefault<vector>("contactForce", Zero)),
-    contactTorque_(dict.getOrDefault<vector>("contactTorque", Zero))
+    contactTorque_(dict.getOrDefault<vector>("contactTorque", Zero)),
+    coupledMassRatio_(1),
+    coupledInertiaRatio_(1)
 {
     checkKeywords(dict);
 
@@ -133,7 +135,9 @@ Foam::dlmParticle::dlmParticle(const dlmParticle& p)
     force_(p.force_),
     torque_(p.torque_),
     contactForce_(p.contactForce_),
-    contactTorque_(p.contactTorque_)
+    contactTorque_(p.contactTorque_),
+    coupledMassRatio_(p.coupledMassRatio_),
+    coupledInertiaRatio_(p.coupledInertiaRatio_)
 {}
 
 

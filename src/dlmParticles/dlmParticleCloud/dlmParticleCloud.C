@@ -1063,8 +1063,11 @@ void Foam::dlmParticleCloud::move()
         // actual contact, and the rigid projection then gives the
         // particle's cells its velocity at the end of the step (the
         // solver's follow step). The prediction makes a resting particle's
-        // load on its contact exact whatever the mixture's inertia in its
-        // cells.
+        // load on its contact exact. Both act on the particle with the
+        // fluid its cells carry (its coupled mass and inertia), which the
+        // follow step moves with it: with the particle's own mass alone a
+        // particle lighter than the fluid bounced under a plate every
+        // step, the follow step amplifying each contact impulse.
         if (predicted)
         {
             for (dlmParticle& p : particles_)
@@ -1077,9 +1080,11 @@ void Foam::dlmParticleCloud::move()
                 p.setVelocities
                 (
                     p.velocity()
-                  - perDensity/p.shape().volume()*p.contactForce(),
+                  - perDensity/(p.coupledMassRatio()*p.shape().volume())
+                   *p.contactForce(),
                     p.angularVelocity()
-                  - perDensity*p.spinPerUnitDensity(p.contactTorque())
+                  - perDensity/p.coupledInertiaRatio()
+                   *p.spinPerUnitDensity(p.contactTorque())
                 );
                 p.setLoads
                 (

@@ -145,9 +145,16 @@ void Foam::particleContact::gatherConstants()
         moving_[i] = p.motion() != dlmParticle::motionType::fixed;
         if (p.isFree())
         {
-            inverseMass_[i] = 1/(p.density()*p.shape().volume());
+            // With the fluid the rigid projection moves with it: the
+            // follow step gives the contacts' change to those cells
+            inverseMass_[i] =
+                1/(p.coupledMassRatio()*p.density()*p.shape().volume());
             inverseInertiaBody_[i] =
-                inv(p.density()*p.shape().inertiaPerUnitDensity());
+                inv
+                (
+                    p.coupledInertiaRatio()*p.density()
+                   *p.shape().inertiaPerUnitDensity()
+                );
         }
         else
         {

@@ -590,6 +590,16 @@ void Foam::fv::interpolated::correct(volVectorField& U)
                 omega
             );
             p.setVelocities(Up, omega);
+
+            // The mass and inertia the forced cells move with the particle
+            const tensor A22(sumTensor(g + gA22));
+            const scalar ownInertia =
+                g[gInertia] + g[gInertia + 3] + g[gInertia + 5];
+            p.setCoupledInertia
+            (
+                g[gA11]/g[gMass],
+                twoD ? A22.zz()/g[gInertia + 5] : tr(A22)/ownInertia
+            );
         }
         projectedVelocity_[i] = p.velocity();
         projectedOmega_[i] = p.angularVelocity();
