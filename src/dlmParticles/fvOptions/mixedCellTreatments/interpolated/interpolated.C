@@ -258,12 +258,8 @@ void Foam::fv::interpolated::sumRegionGeometry()
 
 void Foam::fv::interpolated::restrictForce()
 {
-    const dlmParticleCloud& cloud =
-        mesh_.lookupObject<dlmParticleCloud>("particles");
-    const PtrList<dlmParticle>& particles = cloud.particles();
-    const vectorField& C = mesh_.C();
-    const scalarField& V = mesh_.V();
-    const scalarField& rho = cloud.rho();
+    const PtrList<dlmParticle>& particles =
+        mesh_.lookupObject<dlmParticleCloud>("particles").particles();
     vectorField& f = force_.primitiveFieldRef();
 
     boolList forced(mesh_.nCells(), false);
@@ -281,6 +277,20 @@ void Foam::fv::interpolated::restrictForce()
             f[celli] = Zero;
         }
     }
+
+    removeNetForce();
+}
+
+
+void Foam::fv::interpolated::removeNetForce()
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const PtrList<dlmParticle>& particles = cloud.particles();
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const scalarField& rho = cloud.rho();
+    vectorField& f = force_.primitiveFieldRef();
 
     scalarList sums(nRestrictSums*particles.size(), Zero);
     forAll(particles, i)
@@ -626,8 +636,9 @@ void Foam::fv::interpolated::correct(volVectorField& U)
         }
     }
 
-    // The force is internal to a free particle's mixture
-    restrictForce();
+    // The force is internal to a free particle's mixture (it changed in
+    // the forced cells only)
+    removeNetForce();
 
     setLoads(gravity, rhoFluid, deltaT, twoD);
 }
