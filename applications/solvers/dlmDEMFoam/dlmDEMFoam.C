@@ -85,6 +85,7 @@ int main(int argc, char *argv[])
         }
         particles.setProjected();
         particles.move();
+        particles.removeLeaving();
         particles.printSummary();
 
         // The last step writes its state, whatever the write interval

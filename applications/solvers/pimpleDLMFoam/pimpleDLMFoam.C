@@ -29,7 +29,9 @@ Description
     4. the follow step (rigidProjection::followParticles): the forced
        cells take the contacts' change of the particles' velocities, and
        the excess mass (rho_s - rho_f) phi a particle heavier than the fluid
-       moved into a cell carries the particle's momentum, not the fluid's.
+       moved into a cell carries the particle's momentum, not the fluid's;
+    5. free particles whose centroid entered an outlet (particleProperties
+       'outlets') leave the simulation, counted and recorded.
 
     The convection term takes the fluid's density: the solid is carried by
     the particles' motion (step 4), not by the flux. With the mixture's
@@ -137,6 +139,10 @@ int main(int argc, char *argv[])
         if (projection)
         {
             projection->followParticles(U, phi);
+        }
+        if (particles.removeLeaving() && projection)
+        {
+            projection->recordFractions(particles);
         }
         particles.printSummary();
 

@@ -570,6 +570,195 @@ Foam::label Foam::dlmParticleCloud::findCell(const point& x) const
 }
 
 
+void Foam::dlmParticleCloud::readOutlets(const dictionary& state)
+{
+    const dictionary* dictPtr = properties_.findDict("outlets");
+    if (!dictPtr)
+    {
+        return;
+    }
+    const dictionary* statePtr = state.findDict("outlets");
+    for (const entry& e : *dictPtr)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(*dictPtr)
+                << "outlets: entry '" << e.keyword() << "' is not an outlet"
+                << " dictionary" << exit(FatalIOError);
+        }
+        outlets_.append(particleOutlet::New(e.dict()));
+        if (statePtr)
+        {
+            outlets_.last().readState(*statePtr);
+        }
+    }
+}
+
+
+void Foam::dlmParticleCloud::checkOutlets() const
+{
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        const dlmParticle& p = particles_[i];
+        for (const particleOutlet& outlet : outlets_)
+        {
+            if (p.isFree() && outlet.holds(p.position()))
+            {
+                FatalIOErrorInFunction(properties_)
+                    << "Particle " << p.name() << " at " << p.position()
+                    << " starts in outlet " << outlet.name() << " of"
+                    << " 'outlets': it would leave at the first step (is"
+                    << " the outlet on the side of the domain, its normal"
+                    << " pointing out?)" << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+void Foam::dlmParticleCloud::recordRemoval
+(
+    const particleOutlet& outlet,
+    const dlmParticle& p,
+    const scalar mass
+)
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    if (!outletFile_.valid())
+    {
+        const fileName dir
+        (
+            mesh_.time().globalPath()/"postProcessing"/"particleOutlets"
+           /startTimeName_
+        );
+        mkDir(dir);
+        outletFile_.reset(new OFstream(dir/"outlets.dat"));
+        outletFile_().precision(15);
+        outletFile_()
+            << "# time outlet particle mass x y z Ux Uy Uz"
+            << " outletParticles outletMass" << nl
+            << "# mass: of the particle" << (twoD() ? " per unit depth" : "")
+            << "; outletParticles, outletMass: the outlet's totals" << nl;
+    }
+    OFstream& os = outletFile_();
+    os  << mesh_.time().value() << ' ' << outlet.name().c_str() << ' '
+        << p.name().c_str() << ' ' << mass;
+    for (const vector& v : {p.position(), p.velocity()})
+    {
+        os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
+    }
+    os  << ' ' << outlet.nRemoved() << ' ' << outlet.massRemoved() << endl;
+}
+
+
+void Foam::dlmParticleCloud::removeParticles(const labelList& oldToNew)
+{
+    label nKept = 0;
+    label nReadKept = 0;
+    forAll(oldToNew, i)
+    {
+        const label k = oldToNew[i];
+        if (k < 0)
+        {
+            continue;
+        }
+        ++nKept;
+        if (i < nParticles_)
+        {
+            ++nReadKept;
+        }
+        if (k != i)
+        {
+            particles_.set(k, particles_.set(i, nullptr));
+            cells_[k].transfer(cells_[i]);
+            fractions_[k].transfer(fractions_[i]);
+            nearCells_[k].transfer(nearCells_[i]);
+            if (i < speedChange_.size())
+            {
+                speedChange_[k] = speedChange_[i];
+            }
+        }
+    }
+    particles_.resize(nKept);
+    cells_.resize(nKept);
+    fractions_.resize(nKept);
+    nearCells_.resize(nKept);
+    speedChange_.resize(min(speedChange_.size(), nKept));
+    nParticles_ = nReadKept;
+    for (label& source : imageSource_)
+    {
+        source = oldToNew[source];
+    }
+
+    if (contact_.valid())
+    {
+        contact_->removeParticles(oldToNew);
+    }
+}
+
+
+bool Foam::dlmParticleCloud::removeLeaving()
+{
+    if (outlets_.empty())
+    {
+        return false;
+    }
+    const cpuTime timer;
+
+    labelList oldToNew(identity(particles_.size()));
+    label nLeft = 0;
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        const dlmParticle& p = particles_[i];
+        if (!p.isFree())
+        {
+            continue;
+        }
+        for (particleOutlet& outlet : outlets_)
+        {
+            if (outlet.holds(p.position()))
+            {
+                const scalar mass = p.density()*p.shape().volume();
+                outlet.count(mass);
+                recordRemoval(outlet, p, mass);
+                Info<< "Particle " << p.name() << " leaves through outlet "
+                    << outlet.name() << " (" << outlet.nRemoved()
+                    << " particles, " << outlet.massRemoved() << " kg"
+                    << (twoD() ? "/m" : "") << " so far)" << endl;
+                oldToNew[i] = -1;
+                ++nLeft;
+                break;
+            }
+        }
+    }
+    if (nLeft == 0)
+    {
+        workTime_ += timer.elapsedCpuTime();
+        return false;
+    }
+
+    label k = 0;
+    for (label& index : oldToNew)
+    {
+        if (index >= 0)
+        {
+            index = k++;
+        }
+    }
+    removeParticles(oldToNew);
+    if (resolved_)
+    {
+        updateFields();
+    }
+
+    workTime_ += timer.elapsedCpuTime();
+    return true;
+}
+
+
 void Foam::dlmParticleCloud::updateFractions(const label i)
 {
     const dlmParticle& p = particles_[i];
@@ -864,7 +1053,8 @@ Foam::dlmParticleCloud::dlmParticleCloud
     const wordHashSet known
     ({
         "surfaceResolution", "particles", "particleFile",
-        "particleFileDefaults", "contact", "historyInterval", "FoamFile"
+        "particleFileDefaults", "contact", "historyInterval", "outlets",
+        "FoamFile"
     });
     for (const entry& e : properties_)
     {
@@ -955,11 +1145,14 @@ Foam::dlmParticleCloud::dlmParticleCloud
         }
     }
 
+    readOutlets(state);
+
     checkOverlaps();
     if (contact_.valid())
     {
         contact_->checkWalls();
     }
+    checkOutlets();
 
     cells_.setSize(particles_.size());
     fractions_.setSize(particles_.size());
@@ -1278,6 +1471,16 @@ bool Foam::dlmParticleCloud::writeData(Ostream& os) const
     if (contact_.valid())
     {
         contact_->write(os);
+    }
+
+    if (outlets_.size())
+    {
+        os.beginBlock("outlets");
+        for (const particleOutlet& outlet : outlets_)
+        {
+            outlet.writeState(os);
+        }
+        os.endBlock();
     }
 
     os.precision(oldPrecision);

@@ -1142,6 +1142,46 @@ void Foam::particleContact::checkWalls() const
 }
 
 
+void Foam::particleContact::removeParticles(const labelList& oldToNew)
+{
+    HashTable<Tuple2<vector, label>, contactKey, contactKey::Hash<>> kept
+    (
+        history_.capacity()
+    );
+    forAllConstIters(history_, iter)
+    {
+        // A wall's key is -1 - wall: map particle partners only
+        contactKey key(iter.key());
+        const bool pair = key[1] >= 0;
+        if (oldToNew[key[0]] < 0 || (pair && oldToNew[key[1]] < 0))
+        {
+            continue;
+        }
+        key[0] = oldToNew[key[0]];
+        if (pair)
+        {
+            key[1] = oldToNew[key[1]];
+        }
+        kept.insert(key, iter.val());
+    }
+    history_.transfer(kept);
+
+    const labelList oldMaterial(particleMaterial_);
+    const boolList oldInvolved(involved_);
+    particleMaterial_.setSize(max(oldToNew) + 1);
+    involved_.setSize(particleMaterial_.size());
+    forAll(oldToNew, i)
+    {
+        const label k = oldToNew[i];
+        if (k >= 0)
+        {
+            particleMaterial_[k] = oldMaterial[i];
+            involved_[k] = i < oldInvolved.size() && oldInvolved[i];
+        }
+    }
+}
+
+
 void Foam::particleContact::write(Ostream& os) const
 {
     List<Tuple2<contactKey, vector>> saved(history_.size());
