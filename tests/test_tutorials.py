@@ -10,6 +10,7 @@ import re
 import shutil
 import subprocess
 
+import numpy as np
 import pytest
 
 from foamcase import ROOT
@@ -45,7 +46,7 @@ def test_tutorial_scripts_find_the_project_and_edit_no_tracked_file():
     else a directory above it), refuses a case holding results, and each
     dictionary it sets entries of includes the generated file after its
     defaults; Allclean removes the generated files, and git ignores them."""
-    assert len(TUTORIALS) == 6 and len(SCRIPTS) == 7
+    assert len(TUTORIALS) == 7 and len(SCRIPTS) == 8
     for script in SCRIPTS:
         text = script.read_text()
         name = script.relative_to(ROOT)
@@ -137,4 +138,87 @@ def test_a_tutorial_outside_any_project_without_the_environment_says_what_to_sou
 # What a tutorial directory in the working tree may hold besides its
 # tracked files (an earlier run's output)
 IGNORED = ("log.*", "processor*", "postProcessing", "VTK", "polyMesh", "[1-9]*",
-           "0.[0-9]*", "*.Allrun", "packing.dat", "alpha.solid", "rho", "p", "phi")
+           "0.[0-9]*", "*.Allrun", "packing.dat", "alpha.solid", "rho", "p", "phi",
+           "pebbleBed.dat", "lattice.dat", "render", "*.foam")
+
+
+def particle_state(path):
+    """Positions and velocities of the particles of a written state
+    (uniform/particles), by name."""
+    text = pathlib.Path(path).read_text()
+    state = {}
+    for name, body in re.findall(r"^    (\w+)\n    \{(.*?)^    \}", text, re.M | re.S):
+        values = dict(re.findall(r"^\s+(position|velocity)\s+\(([^)]*)\);", body, re.M))
+        if not values:
+            continue    # an outlet's counts
+        state[name] = [float(v) for v in values["position"].split() + values["velocity"].split()]
+    return state
+
+
+@pytest.fixture(scope="module")
+def pebble_runs(tmp_path_factory, foam_env):
+    """tutorials/pebbleDischarge for 0.1 s serially, then on 2 ranks from the
+    same bed (reused: no second fill), with converged linear solvers so
+    that the two could differ by round-off only."""
+    tmp_path = tmp_path_factory.mktemp("pebbleDischarge")
+    runs = {}
+    for name, ranks in (("serial", 1), ("parallel", 2)):
+        case = tmp_path / name
+        shutil.copytree(ROOT / "tutorials" / "pebbleDischarge", case,
+                        ignore=shutil.ignore_patterns(*IGNORED))
+        fv_solution = case / "system/fvSolution"
+        fv_solution.write_text(fv_solution.read_text()
+                               .replace("tolerance       1e-7;", "tolerance       1e-13;")
+                               .replace("relTol          0.01;", "relTol          0;")
+                               .replace("tolerance       1e-8;", "tolerance       1e-14;"))
+        if ranks > 1:
+            shutil.copy(tmp_path / "serial/constant/pebbleBed.dat", case / "constant/pebbleBed.dat")
+        result = run(case / "Allrun", 4, ranks, 0.1, env=foam_env)
+        assert result.returncode == 0, result.stdout + result.stderr
+        runs[name] = (case, result.stdout)
+    return runs
+
+
+def last_state(case):
+    last = max((t for t in os.listdir(case) if re.fullmatch(r"0\.\d+", t)), key=float)
+    return particle_state(case / last / "uniform/particles")
+
+
+def test_pebble_discharge_fills_its_bed_and_runs_serial_and_parallel(pebble_runs):
+    """The fill packs 250 pebbles at rest under the cone and the barrier,
+    without overlaps beyond 1 % of d; the discharge starts (the pebbles in
+    the opening rise) in serial and on 2 ranks, the latter reusing the
+    bed."""
+    (serial, serial_out), (parallel, parallel_out) = pebble_runs["serial"], pebble_runs["parallel"]
+    assert "Bed: filled" in serial_out and "Bed: filled" not in parallel_out
+    bed = np.loadtxt(serial / "constant/pebbleBed.dat")
+    assert bed.shape == (250, 4)
+    d = 0.025
+    centres = bed[:, :3]
+    gaps = np.linalg.norm(centres[:, None] - centres[None], axis=2) - d
+    np.fill_diagonal(gaps, d)
+    assert gaps.min() > -0.01*d
+    assert bed[:, 2].max() < 0.2106 - 0.49*d
+    fill_speed = float(re.findall(r"largest speed (\S+) m/s", (serial / "log.fill").read_text())[-1])
+    assert fill_speed < 0.01
+    for case in (serial, parallel):
+        state = last_state(case)
+        assert len(state) == 250
+        top = max(state, key=lambda name: state[name][2])
+        assert state[top][5] > 0.05, "the pebbles in the opening do not rise"
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "known defect (issue 29): on 2 ranks the fluid force on a few pebbles "
+    "differs from the serial run's by 2e-4 of the largest already in the "
+    "first step (bed_72, bed_98, near the reservoir's wall below the cone); "
+    "single pebbles and 50 agree to round-off"))
+def test_pebble_discharge_on_2_ranks_equals_serial(pebble_runs):
+    """Every pebble's position and velocity after 0.1 s agree with the
+    serial run's to round-off amplified by the contacts."""
+    a = last_state(pebble_runs["serial"][0])
+    b = last_state(pebble_runs["parallel"][0])
+    speed = max(np.linalg.norm(v[3:]) for v in a.values())
+    for name in a:
+        assert np.abs(np.subtract(a[name][:3], b[name][:3])).max() < 1e-9, name
+        assert np.abs(np.subtract(a[name][3:], b[name][3:])).max() < 1e-6*speed, name

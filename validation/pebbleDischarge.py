@@ -1,0 +1,175 @@
+"""Analysis of a pebble discharge (tutorials/pebbleDischarge, the paper's
+section 3.4): the pebble mass flux through the chute (from the outlet's
+record) and through a section of the bed (pebbles crossing it, from the
+history), their mass balance, the bed bottom (the lowest pebble in the
+central cylinder of the opening's radius, as the paper), and the pebbles'
+vertical velocity across the bed early in the discharge."""
+
+import pathlib
+import re
+
+import numpy as np
+
+# The paper's full scene (figure 18): about 4 kg/(m2 s) in the bed and 60
+# in the chute
+PAPER_BED_FLUX = 4.0
+PAPER_CHUTE_FLUX = 60.0
+PEBBLE_DENSITY = 843.0
+
+
+def geometry(case_dir):
+    """The entries of the case's constant/geometry."""
+    text = (pathlib.Path(case_dir) / "constant/geometry").read_text()
+    return {k: float(v) for k, v in re.findall(r"^(\w+)\s+([-0-9.eE]+);", text, re.M)}
+
+
+def outlet_record(case_dir):
+    """Times and cumulative mass of the pebbles that left, over every run
+    of the case (restarts append a directory per start time)."""
+    rows = []
+    for path in sorted((pathlib.Path(case_dir) / "postProcessing/particleOutlets").glob(
+            "*/outlets.dat")):
+        for line in path.read_text().splitlines():
+            if not line.startswith("#"):
+                fields = line.split()
+                rows.append((float(fields[0]), float(fields[3])))
+    rows.sort()
+    t = np.array([r[0] for r in rows])
+    return t, np.cumsum([r[1] for r in rows])
+
+
+def history(case_dir):
+    """Pebble history (every historyInterval steps): times, names and
+    positions (time, pebble, xyz) and velocities, from every start time."""
+    times, names, rows = [], [], []
+    for path in sorted((pathlib.Path(case_dir) / "postProcessing/particles").glob(
+            "*/particles.dat")):
+        for line in path.read_text().splitlines():
+            if line.startswith("#"):
+                continue
+            fields = line.split()
+            times.append(float(fields[0]))
+            names.append(fields[1])
+            rows.append([float(v) for v in fields[2:8]])
+    return np.array(times), np.array(names), np.array(rows)
+
+
+def steady_rate(t, mass, low=0.2, high=0.8):
+    """Mass rate [kg/s] from a linear fit of the cumulative mass between
+    the given fractions of its final value (the steady part)."""
+    if len(t) < 5:
+        return float("nan")
+    keep = (mass >= low*mass[-1]) & (mass <= high*mass[-1])
+    if keep.sum() < 3:
+        return float("nan")
+    return float(np.polyfit(t[keep], mass[keep], 1)[0])
+
+
+def bed_crossings(times, names, rows, z_section, mass):
+    """Times at which pebbles first cross the section z_section upward, and
+    the cumulative mass through it."""
+    first = {}
+    for time, name, z in zip(times, names, rows[:, 2]):
+        if z > z_section and name not in first:
+            first[name] = time
+    start = {name for time, name, z in zip(times, names, rows[:, 2])
+             if time == times.min() and z > z_section}
+    crossed = sorted(t for name, t in first.items() if name not in start)
+    return np.array(crossed), mass*np.arange(1, len(crossed) + 1)
+
+
+def bed_bottom(times, names, rows, radius):
+    """The lowest pebble centre in the central cylinder of the given radius
+    at each history time."""
+    central = rows[:, 0]**2 + rows[:, 1]**2 < radius**2
+    out_t, out_z = [], []
+    for time in np.unique(times):
+        here = (times == time) & central
+        if here.any():
+            out_t.append(time)
+            out_z.append(rows[here, 2].min())
+    return np.array(out_t), np.array(out_z)
+
+
+def velocity_profile(times, rows, time, z_low, z_high, edges):
+    """Mean vertical velocity of the pebbles in radial bins of a slab of the
+    bed at the history time nearest the given one."""
+    nearest = times[np.argmin(np.abs(times - time))]
+    at = (times == nearest) & (rows[:, 2] > z_low) & (rows[:, 2] < z_high)
+    radius = np.hypot(rows[at, 0], rows[at, 1])
+    uz = rows[at, 5]
+    means = [uz[(radius >= a) & (radius < b)].mean() if ((radius >= a) & (radius < b)).any()
+             else np.nan for a, b in zip(edges[:-1], edges[1:])]
+    return nearest, 0.5*(edges[:-1] + edges[1:]), np.array(means)
+
+
+def summary(case_dir):
+    """The discharge's figures: a dict of the fluxes, their balance, the bed
+    bottom's rise and the series for the plots."""
+    g = geometry(case_dir)
+    d, R, r = g["d"], g["R"], g["r"]
+    mass = PEBBLE_DENSITY*np.pi*d**3/6
+    t_out, m_out = outlet_record(case_dir)
+    times, names, rows = history(case_dir)
+    # The bed section: two diameters below the cone, in the reservoir
+    z_section = g["coneBase"] - 2*d
+    t_bed, m_bed = bed_crossings(times, names, rows, z_section, mass)
+    chute_rate = steady_rate(t_out, m_out)
+    bed_rate = steady_rate(t_bed, m_bed)
+    bottom_t, bottom_z = bed_bottom(times, names, rows, r)
+    profile = velocity_profile(times, rows, 0.5, z_section - 2*d, z_section,
+                               np.linspace(0, R, 6))
+    return {
+        "chute_area": np.pi*r**2, "bed_area": np.pi*R**2,
+        "chute_flux": chute_rate/(np.pi*r**2), "bed_flux": bed_rate/(np.pi*R**2),
+        "chute_rate": chute_rate, "bed_rate": bed_rate, "z_section": z_section,
+        "left": len(t_out), "t_out": t_out, "m_out": m_out, "t_bed": t_bed, "m_bed": m_bed,
+        "bottom_t": bottom_t, "bottom_z": bottom_z, "profile": profile,
+    }
+
+
+def plot(results, output, labels=None):
+    """Discharged mass, bed bottom and early velocity profile of one or more
+    runs (results: a list of summary dicts)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    labels = labels or [""]*len(results)
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.5))
+    for s, label in zip(results, labels):
+        line, = axes[0].plot(s["t_out"], s["m_out"], label=f"chute {label}".strip())
+        axes[0].plot(s["t_bed"], s["m_bed"], "--", color=line.get_color(),
+                     label=f"bed section {label}".strip())
+        axes[1].plot(s["bottom_t"], s["bottom_z"], color=line.get_color(),
+                     label=label or "pimpleDLMFoam")
+        t, centres, means = s["profile"]
+        axes[2].plot(centres, means, "o-", color=line.get_color(),
+                     label=f"t = {t:.2f} s {label}".strip())
+    axes[0].set(xlabel="t [s]", ylabel="pebble mass through [kg]",
+                title="Pebble mass through the chute's end and a bed section")
+    axes[1].set(xlabel="t [s]", ylabel="z [m]",
+                title="Bed bottom (lowest pebble, central cylinder r = 51 mm)")
+    axes[2].axhline(0, color="0.6", lw=0.8)
+    axes[2].set(xlabel="radius [m]", ylabel="mean u_z [m/s]",
+                title="Pebble velocity across the bed, early")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(output, dpi=120)
+    plt.close(fig)
+
+
+def report(case_dir, s):
+    """The lines printed about a run."""
+    balance = s["bed_rate"]/s["chute_rate"] - 1 if s["chute_rate"] > 0 else float("nan")
+    return [
+        f"Pebble discharge ({case_dir}): {s['left']} pebbles left",
+        f"  chute flux {s['chute_flux']:.1f} kg/(m2 s) (paper, full scene: "
+        f"{PAPER_CHUTE_FLUX:.0f}), rate {s['chute_rate']:.3f} kg/s",
+        f"  bed flux   {s['bed_flux']:.1f} kg/(m2 s) through z = {s['z_section']:.3f} m"
+        f" (paper, full scene with 4 times the bed's area: {PAPER_BED_FLUX:.0f}),"
+        f" rate {s['bed_rate']:.3f} kg/s",
+        f"  mass balance: bed rate {100*balance:+.1f} % of the chute's",
+    ]
