@@ -531,9 +531,13 @@ void Foam::forcedRegions::findRegion(const label i)
             }
             const scalar Lout2 = -(e & delta2);
             // A first sample left to the flow takes the linear profile's
-            // weight, at most a half, not the quadratic's, up to 1
+            // weight, at most a half, not the quadratic's, up to 1. A wall
+            // half a cell beyond the first sample (a uniform mesh's) gives
+            // a linear profile: the margin keeps the round-off of the cell
+            // centres, which differs between a mesh and its decomposition,
+            // from deciding
             quadratic =
-                quadratic && Lout2 > 0.5*Lout
+                quadratic && Lout2 > (0.5 + 1e-6)*Lout
              && !sampleLeftToFlow(out->celli, out->face);
 
             scalar aLine, cOut, cOut2 = 0;
