@@ -223,3 +223,32 @@ def test_particle_leaves_a_fluid_in_parallel_as_in_serial(tmp_path, foam_env):
         assert float(last) == pytest.approx(0.6)
         assert np.abs(case.internal_field(f"{last}/alpha.solid")).max() == 0
         assert np.allclose(case.internal_field(f"{last}/rho"), 1000)
+
+
+def test_particle_leaving_a_fluid_mesh_without_an_outlet_stops_the_run(tmp_path, foam_env):
+    """With contacts but no contact wall at the lid (meshWalls false) the
+    pebble rises through it: once its centre is out of the mesh, out of the
+    flow, the run stops with an error naming it and suggesting an outlet,
+    after writing the state of that time."""
+    case = wet_case(tmp_path, foam_env, "noOutlet")
+    props = case.path / "constant/particleProperties"
+    text = props.read_text()
+    props.write_text(text[:text.index("outlets")] + """
+contact
+{
+    meshWalls false;
+    pairs { pebbleWall { materials (particle wall); law overlapVolume;
+                         stiffness 1e9; restitution 0.5; friction 0.3; } }
+}
+""")
+    case.set("constant/particleProperties", "particles/sphere/position",
+             "(0.0151 0.0149 0.035)")
+    result = case.run("pimpleDLMFoam", check=False)
+    assert result.returncode != 0
+    assert "Particle sphere left the mesh" in result.log
+    assert "outlets" in result.log
+    last = case.times()[-1]
+    assert float(last) < 0.6
+    state = (case.path / last / "uniform/particles").read_text()
+    z = float(re.search(r"position\s+\(\S+ \S+ (\S+)\)", state).group(1))
+    assert z > 0.045

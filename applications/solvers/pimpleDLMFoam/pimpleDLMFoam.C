@@ -144,18 +144,25 @@ int main(int argc, char *argv[])
         {
             projection->recordFractions(particles);
         }
+        particles.checkInMesh();
         particles.printSummary();
 
-        // The last step and a stop at a wall write their state, whatever
-        // the write interval
-        const bool touching = particles.touchingBoundary();
+        // The last step and a stop (a particle at a wall without contacts,
+        // or out of the mesh) write their state, whatever the write
+        // interval
+        const bool stopping =
+            particles.touchingBoundary() || particles.leftMesh();
         const bool lastStep = progress.lastStep();
 
         const cpuTime outputTimer;
-        particles.writeStep(touching || lastStep);
-        particles.addWorkTime(outputTimer.elapsedCpuTime());
+        particles.writeStep(stopping || lastStep);
+        particles.addWorkTime
+        (
+            dlmParticleCloud::workPart::output,
+            outputTimer.elapsedCpuTime()
+        );
 
-        if (touching || lastStep)
+        if (stopping || lastStep)
         {
             runTime.writeNow();
         }
@@ -164,18 +171,19 @@ int main(int argc, char *argv[])
             runTime.write();
         }
 
-        if (touching)
+        if (particles.touchingBoundary())
         {
             particles.failAtBoundary();
+        }
+        if (particles.leftMesh())
+        {
+            particles.failOutsideMesh();
         }
 
         runTime.printExecutionTime(Info);
     }
 
-    Info<< "Particle work (fractions, projection, motion, output): "
-        << particles.workTime() << " s, "
-        << 100*particles.workTime()/max(runTime.elapsedCpuTime(), SMALL)
-        << " % of the execution time" << nl << endl;
+    particles.printWorkTime(runTime.elapsedCpuTime());
 
     Info<< "End\n" << endl;
 

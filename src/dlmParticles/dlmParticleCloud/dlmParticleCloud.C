@@ -547,6 +547,40 @@ void Foam::dlmParticleCloud::failAtBoundary() const
 }
 
 
+void Foam::dlmParticleCloud::checkInMesh()
+{
+    const cpuTime timer;
+    boolList inMesh(nParticles_, true);
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        if (particles_[i].isFree())
+        {
+            inMesh[i] = findCell(particles_[i].position()) >= 0;
+        }
+    }
+    Pstream::listCombineGather(inMesh, orEqOp<bool>());
+    Pstream::listCombineScatter(inMesh);
+    leftMesh_ = inMesh.find(false);
+    addWorkTime(workPart::motion, timer.elapsedCpuTime());
+}
+
+
+void Foam::dlmParticleCloud::failOutsideMesh() const
+{
+    const dlmParticle& p = particles_[leftMesh_];
+    FatalErrorInFunction
+        << "Particle " << p.name() << " left the mesh at t = "
+        << mesh_.time().value() << " (position " << p.position()
+        << ", velocity " << p.velocity() << "), out of the flow. A particle"
+        << " leaves the mesh when an overlap throws it out, at an absurd"
+        << " velocity, or where no wall holds it (meshWalls false): check"
+        << " the particles' overlaps, velocities and walls and gravity"
+        << " (constant/g); to let particles leave, give an outlet ('outlets'"
+        << " in " << properties_.filePath() << ", see README.md). The state"
+        << " of this time has been written" << exit(FatalError);
+}
+
+
 Foam::label Foam::dlmParticleCloud::findCell(const point& x) const
 {
     DynamicList<label> candidates;
@@ -736,7 +770,7 @@ bool Foam::dlmParticleCloud::removeLeaving()
     }
     if (nLeft == 0)
     {
-        workTime_ += timer.elapsedCpuTime();
+        addWorkTime(workPart::motion, timer.elapsedCpuTime());
         return false;
     }
 
@@ -754,7 +788,7 @@ bool Foam::dlmParticleCloud::removeLeaving()
         updateFields();
     }
 
-    workTime_ += timer.elapsedCpuTime();
+    addWorkTime(workPart::motion, timer.elapsedCpuTime());
     return true;
 }
 
@@ -1013,6 +1047,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     cellIsBox_(mesh.nCells()),
     boundaryCell_(mesh.nCells(), false),
     touchingBoundary_(-1),
+    leftMesh_(-1),
     nMoves_(0),
     resolved_(!dry),
     splitDirections_(Zero),
@@ -1046,7 +1081,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     ),
     projected_(false),
     contactPredicted_(false),
-    workTime_(0),
+    workTimes_(Zero),
     startTimeName_(mesh.time().timeName()),
     restarted_(false)
 {
@@ -1310,8 +1345,11 @@ void Foam::dlmParticleCloud::move()
         }
     }
 
+    addWorkTime(workPart::motion, timer.elapsedCpuTime());
+
     if (resolved_)
     {
+        const cpuTime fractionTimer;
         forAll(particles_, i)
         {
             if (particles_[i].motion() != dlmParticle::motionType::fixed)
@@ -1321,6 +1359,7 @@ void Foam::dlmParticleCloud::move()
         }
         reduceTouching();
         updateFields();
+        addWorkTime(workPart::fractions, fractionTimer.elapsedCpuTime());
     }
 
     speedChange_.setSize(particles_.size());
@@ -1332,8 +1371,6 @@ void Foam::dlmParticleCloud::move()
           + mag(p.angularVelocity() - startOmega[i])
            *p.shape().boundingRadius();
     }
-
-    workTime_ += timer.elapsedCpuTime();
 }
 
 
@@ -1388,6 +1425,21 @@ void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
     {
         writeVTK();
     }
+}
+
+
+void Foam::dlmParticleCloud::printWorkTime(const scalar executionTime) const
+{
+    const scalar share = 100/max(executionTime, SMALL);
+    Info<< "Particle work (fractions, projection, motion, output): "
+        << workTime() << " s, " << share*workTime()
+        << " % of the execution time" << nl
+        << "    fractions " << workTimes_[label(workPart::fractions)]
+        << " s, projection "
+        << workTimes_[label(workPart::projection)]
+        << " s, contacts and motion " << workTimes_[label(workPart::motion)]
+        << " s, output " << workTimes_[label(workPart::output)] << " s"
+        << nl << endl;
 }
 
 

@@ -183,7 +183,11 @@ void Foam::fv::rigidProjection::addSup
     {
         cloud.setContactPredicted();
     }
-    cloud.addWorkTime(timer.elapsedCpuTime());
+    cloud.addWorkTime
+    (
+        dlmParticleCloud::workPart::projection,
+        timer.elapsedCpuTime()
+    );
 }
 
 
@@ -193,7 +197,14 @@ void Foam::fv::rigidProjection::constrain
     const label fieldi
 )
 {
+    // The search for the forced cells after a move runs here
+    const cpuTime timer;
     treatment_->constrain(eqn);
+    mesh_.lookupObjectRef<dlmParticleCloud>("particles").addWorkTime
+    (
+        dlmParticleCloud::workPart::projection,
+        timer.elapsedCpuTime()
+    );
 }
 
 
@@ -206,7 +217,11 @@ void Foam::fv::rigidProjection::correct(volVectorField& U)
 
     U.correctBoundaryConditions();
     cloud.setProjected();
-    cloud.addWorkTime(timer.elapsedCpuTime());
+    cloud.addWorkTime
+    (
+        dlmParticleCloud::workPart::projection,
+        timer.elapsedCpuTime()
+    );
 }
 
 
@@ -304,7 +319,11 @@ void Foam::fv::rigidProjection::followParticles
         U.correctBoundaryConditions();
         phi += fvc::flux(change);
     }
-    cloud.addWorkTime(timer.elapsedCpuTime());
+    cloud.addWorkTime
+    (
+        dlmParticleCloud::workPart::projection,
+        timer.elapsedCpuTime()
+    );
 }
 
 
