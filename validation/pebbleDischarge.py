@@ -65,6 +65,15 @@ def steady_rate(t, mass, low=0.2, high=0.8):
     return float(np.polyfit(t[keep], mass[keep], 1)[0])
 
 
+def window_rate(t, mass, start, end):
+    """Mass rate [kg/s] from a linear fit of the cumulative mass within
+    [start, end]."""
+    keep = (t >= start) & (t <= end)
+    if keep.sum() < 3:
+        return float("nan")
+    return float(np.polyfit(t[keep], mass[keep], 1)[0])
+
+
 def bed_crossings(times, names, rows, z_section, mass):
     """Times at which pebbles first cross the section z_section upward, and
     the cumulative mass through it."""
@@ -116,6 +125,27 @@ def summary(case_dir):
     t_bed, m_bed = bed_crossings(times, names, rows, z_section, mass)
     chute_rate = steady_rate(t_out, m_out)
     bed_rate = steady_rate(t_bed, m_bed)
+    # The balance over the time both flow: from the first pebble out of
+    # the chute to the last through the bed section (the bed's bottom
+    # passes it), as the rate changes over the discharge
+    # and the pebbles counted: in through the section, out of the chute and
+    # held between them at both ends (the region between need not be
+    # steady: it empties as the bed above the section dilates)
+    counts = None
+    if len(t_out) and len(t_bed):
+        start, end = t_out[0], t_bed[-1]
+        balance = window_rate(t_bed, m_bed, start, end)/window_rate(t_out, m_out, start, end) - 1
+
+        def between(time):
+            at = times == times[np.argmin(np.abs(times - time))]
+            z = rows[at, 2]
+            return int(((z > z_section) & (z < g["outletZ"])).sum())
+
+        counts = (int(((t_bed > start) & (t_bed <= end)).sum()),
+                  int(((t_out > start) & (t_out <= end)).sum()),
+                  between(start), between(end))
+    else:
+        start = end = balance = float("nan")
     bottom_t, bottom_z = bed_bottom(times, names, rows, r)
     profile = velocity_profile(times, rows, 0.5, z_section - 2*d, z_section,
                                np.linspace(0, R, 6))
@@ -123,6 +153,7 @@ def summary(case_dir):
         "chute_area": np.pi*r**2, "bed_area": np.pi*R**2,
         "chute_flux": chute_rate/(np.pi*r**2), "bed_flux": bed_rate/(np.pi*R**2),
         "chute_rate": chute_rate, "bed_rate": bed_rate, "z_section": z_section,
+        "balance": balance, "balance_window": (start, end), "counts": counts,
         "left": len(t_out), "t_out": t_out, "m_out": m_out, "t_bed": t_bed, "m_bed": m_bed,
         "bottom_t": bottom_t, "bottom_z": bottom_z, "profile": profile,
     }
@@ -163,7 +194,7 @@ def plot(results, output, labels=None):
 
 def report(case_dir, s):
     """The lines printed about a run."""
-    balance = s["bed_rate"]/s["chute_rate"] - 1 if s["chute_rate"] > 0 else float("nan")
+    start, end = s["balance_window"]
     return [
         f"Pebble discharge ({case_dir}): {s['left']} pebbles left",
         f"  chute flux {s['chute_flux']:.1f} kg/(m2 s) (paper, full scene: "
@@ -171,5 +202,11 @@ def report(case_dir, s):
         f"  bed flux   {s['bed_flux']:.1f} kg/(m2 s) through z = {s['z_section']:.3f} m"
         f" (paper, full scene with 4 times the bed's area: {PAPER_BED_FLUX:.0f}),"
         f" rate {s['bed_rate']:.3f} kg/s",
-        f"  mass balance: bed rate {100*balance:+.1f} % of the chute's",
-    ]
+        f"  mass balance: bed rate {100*s['balance']:+.1f} % of the chute's over"
+        f" {start:.2f} to {end:.2f} s, when both flow",
+    ] + ([
+        f"  pebbles over that time: {s['counts'][0]} in through the section,"
+        f" {s['counts'][1]} out of the chute, {s['counts'][2]} -> {s['counts'][3]}"
+        f" between them (residual {s['counts'][0] - s['counts'][1] - s['counts'][3] + s['counts'][2]:+d},"
+        f" from the history's sampling)",
+    ] if s["counts"] else [])
