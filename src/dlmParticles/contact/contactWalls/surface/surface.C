@@ -224,7 +224,7 @@ void Foam::contactWalls::surface::contacts
         const pointHit hit(tri.nearestPointClassify(X, nearType, nearLabel));
         const vector d(X - hit.rawPoint());
         const scalar distance = mag(d);
-        if (distance >= R || distance < VSMALL)
+        if (distance >= R)
         {
             continue;
         }
@@ -232,8 +232,19 @@ void Foam::contactWalls::surface::contacts
 
         wallContact c;
         c.location = hit.rawPoint();
-        c.normal = d/distance;
         c.distance = distance;
+        if (distance < VSMALL)
+        {
+            // The centroid on the surface: the face's normal stands for the
+            // unknown side, so that the contact (an overlap of R, refused
+            // at the start) is not lost
+            c.normal = n;
+            c.feature = facet_[facei];
+            faceHits.append(c);
+            faceNormals.append(n);
+            continue;
+        }
+        c.normal = d/distance;
 
         if
         (
