@@ -650,6 +650,23 @@ void Foam::dlmParticleCloud::checkOutlets() const
 }
 
 
+Foam::autoPtr<Foam::OFstream> Foam::dlmParticleCloud::newRecord
+(
+    const word& name,
+    const word& file
+) const
+{
+    const fileName dir
+    (
+        mesh_.time().globalPath()/"postProcessing"/name/startTimeName_
+    );
+    mkDir(dir);
+    autoPtr<OFstream> os(new OFstream(dir/file));
+    os().precision(15);
+    return os;
+}
+
+
 void Foam::dlmParticleCloud::recordRemoval
 (
     const particleOutlet& outlet,
@@ -663,14 +680,7 @@ void Foam::dlmParticleCloud::recordRemoval
     }
     if (!outletFile_.valid())
     {
-        const fileName dir
-        (
-            mesh_.time().globalPath()/"postProcessing"/"particleOutlets"
-           /startTimeName_
-        );
-        mkDir(dir);
-        outletFile_.reset(new OFstream(dir/"outlets.dat"));
-        outletFile_().precision(15);
+        outletFile_ = newRecord("particleOutlets", "outlets.dat");
         outletFile_()
             << "# time outlet particle mass x y z Ux Uy Uz"
             << " outletParticles outletMass" << nl
@@ -1384,14 +1394,7 @@ void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
     {
         if (!historyFile_.valid())
         {
-            const fileName dir
-            (
-                mesh_.time().globalPath()/"postProcessing"/"particles"
-               /startTimeName_
-            );
-            mkDir(dir);
-            historyFile_.reset(new OFstream(dir/"particles.dat"));
-            historyFile_().precision(15);
+            historyFile_ = newRecord("particles", "particles.dat");
             historyFile_()
                 << "# time particle x y z Ux Uy Uz omegax omegay omegaz"
                 << " Fx Fy Fz Tx Ty Tz Fcx Fcy Fcz Tcx Tcy Tcz" << nl
