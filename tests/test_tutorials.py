@@ -41,12 +41,12 @@ def run(script, *args, env):
 
 
 def test_tutorial_scripts_find_the_project_and_edit_no_tracked_file():
-    """Every Allrun (and randomBed's Allrun.pre): no sed -i on the case's
+    """Every Allrun (and the Allrun.pre and Allrun.dry beside some): no sed -i on the case's
     files and no etc/bashrc two levels up; it finds the project (DLM_PROJECT_DIR,
     else a directory above it), refuses a case holding results, and each
     dictionary it sets entries of includes the generated file after its
     defaults; Allclean removes the generated files, and git ignores them."""
-    assert len(TUTORIALS) == 7 and len(SCRIPTS) == 8
+    assert len(TUTORIALS) == 7 and len(SCRIPTS) == 10
     for script in SCRIPTS:
         text = script.read_text()
         name = script.relative_to(ROOT)
@@ -222,3 +222,33 @@ def test_pebble_discharge_on_2_ranks_equals_serial(pebble_runs):
     for name in a:
         assert np.abs(np.subtract(a[name][:3], b[name][:3])).max() < 1e-9, name
         assert np.abs(np.subtract(a[name][3:], b[name][3:])).max() < 1e-6*speed, name
+
+
+def test_pebble_discharge_dry_rises_freely_where_the_water_holds_back(pebble_runs, foam_env):
+    """Allrun.dry runs the serial case's bed without water (dlmDEMFoam under
+    buoyancy-reduced gravity, reusing the mesh and the bed): the pebbles in
+    the opening, free above, rise at g (rho_f/rho_s - 1) t, within 3 % at
+    0.1 s (their mean), while in the water they rise at less than half of
+    it; a second Allrun.dry is refused."""
+    import sys
+    sys.path.insert(0, str(ROOT / "validation"))
+    import pebbleDischarge
+
+    case, _ = pebble_runs["serial"]
+    result = run(case / "Allrun.dry", 0.1, env=foam_env)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "Dry discharge: 0 of 250 pebbles left by 0.1 s" in result.stdout
+    free_rise = 9.81*(1000/843 - 1)*0.1
+    opening = 0.2106 - 0.5*0.025
+
+    times, _, rows = pebbleDischarge.history(case / "dry")
+    at = np.isclose(times, 0.1) & (rows[:, 2] > opening)
+    assert at.sum() >= 5
+    assert rows[at, 5].mean() == pytest.approx(free_rise, rel=0.03)
+
+    wet = last_state(case)
+    wet_rise = np.mean([v[5] for v in wet.values() if v[2] > opening])
+    assert 0 < wet_rise < 0.5*free_rise
+
+    second = run(case / "Allrun.dry", 0.1, env=foam_env)
+    assert second.returncode != 0 and "run ./Allclean first" in second.stderr

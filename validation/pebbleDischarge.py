@@ -18,8 +18,13 @@ PEBBLE_DENSITY = 843.0
 
 
 def geometry(case_dir):
-    """The entries of the case's constant/geometry."""
-    text = (pathlib.Path(case_dir) / "constant/geometry").read_text()
+    """The entries of the case's constant/geometry, or of its parent's for
+    a subcase (the tutorial's dry/)."""
+    case_dir = pathlib.Path(case_dir)
+    path = case_dir / "constant/geometry"
+    if not path.exists():
+        path = case_dir.parent / "constant/geometry"
+    text = path.read_text()
     return {k: float(v) for k, v in re.findall(r"^(\w+)\s+([-0-9.eE]+);", text, re.M)}
 
 
@@ -77,13 +82,14 @@ def window_rate(t, mass, start, end):
 def bed_crossings(times, names, rows, z_section, mass):
     """Times at which pebbles first cross the section z_section upward, and
     the cumulative mass through it."""
-    first = {}
-    for time, name, z in zip(times, names, rows[:, 2]):
-        if z > z_section and name not in first:
-            first[name] = time
-    start = {name for time, name, z in zip(times, names, rows[:, 2])
-             if time == times.min() and z > z_section}
-    crossed = sorted(t for name, t in first.items() if name not in start)
+    order = np.lexsort((times, names))
+    names_sorted, times_sorted = names[order], times[order]
+    above = rows[order, 2] > z_section
+    first_above = {}
+    for name, time in zip(names_sorted[above], times_sorted[above]):
+        first_above.setdefault(name, time)
+    start = set(names[(times == times.min()) & (rows[:, 2] > z_section)])
+    crossed = sorted(t for name, t in first_above.items() if name not in start)
     return np.array(crossed), mass*np.arange(1, len(crossed) + 1)
 
 
@@ -91,13 +97,10 @@ def bed_bottom(times, names, rows, radius):
     """The lowest pebble centre in the central cylinder of the given radius
     at each history time."""
     central = rows[:, 0]**2 + rows[:, 1]**2 < radius**2
-    out_t, out_z = [], []
-    for time in np.unique(times):
-        here = (times == time) & central
-        if here.any():
-            out_t.append(time)
-            out_z.append(rows[here, 2].min())
-    return np.array(out_t), np.array(out_z)
+    out_t, index = np.unique(times[central], return_inverse=True)
+    out_z = np.full(len(out_t), np.inf)
+    np.minimum.at(out_z, index, rows[central, 2])
+    return out_t, out_z
 
 
 def velocity_profile(times, rows, time, z_low, z_high, edges):
@@ -113,13 +116,33 @@ def velocity_profile(times, rows, time, z_low, z_high, edges):
 
 
 def summary(case_dir):
-    """The discharge's figures: a dict of the fluxes, their balance, the bed
-    bottom's rise and the series for the plots."""
-    g = geometry(case_dir)
+    """The discharge's figures of a case (pimpleDLMFoam or dlmDEMFoam): a
+    dict of the fluxes, their balance, the bed bottom's rise and the series
+    for the plots."""
+    return summary_of(geometry(case_dir), outlet_record(case_dir), history(case_dir))
+
+
+def departures(times, names, mass):
+    """The outlet record of a history in which a pebble that left is no
+    longer listed: the first history time without it, and the cumulative
+    mass (LIGGGHTS' lost atoms)."""
+    sampled = np.unique(times)
+    last = {}
+    for time, name in zip(times, names):
+        last[name] = max(time, last.get(name, time))
+    left = sorted(sampled[np.searchsorted(sampled, t) + 1] for t in last.values()
+                  if t < sampled[-1])
+    return np.array(left), mass*np.arange(1, len(left) + 1)
+
+
+def summary_of(g, outlet, pebble_history):
+    """The discharge's figures from the geometry, the outlet record (times,
+    cumulative mass) and the pebble history (times, names, rows x y z u v
+    w)."""
     d, R, r = g["d"], g["R"], g["r"]
     mass = PEBBLE_DENSITY*np.pi*d**3/6
-    t_out, m_out = outlet_record(case_dir)
-    times, names, rows = history(case_dir)
+    t_out, m_out = outlet
+    times, names, rows = pebble_history
     # The bed section: two diameters below the cone, in the reservoir
     z_section = g["coneBase"] - 2*d
     t_bed, m_bed = bed_crossings(times, names, rows, z_section, mass)

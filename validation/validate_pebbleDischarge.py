@@ -10,8 +10,22 @@ bottom, velocity across the bed) in
 results/pebbleDischarge_<scene>_<N>_e<e>_k<factor>.png.
 
     validation/validate_pebbleDischarge.py [--scene reduced|full]
+        [--medium wet|dry|both] [--liggghts] [--law overlapVolume|linear]
         [--end-time T] [--np 1] [--restitution e] [--stiffness-factor f]
-        [N ...]           (default reduced, 6 s, N = 4, e 0.8, f 0.01)
+        [N ...]           (default reduced, wet, overlapVolume, 6 s, N = 4,
+                           e 0.8, f 0.01)
+
+--medium dry runs the same bed without water (the tutorial's Allrun.dry:
+dlmDEMFoam under buoyancy-reduced gravity; its rows have cellsPerDiameter
+0, as no fluid is resolved); both runs the wet case, then the dry one from
+its bed, plotted together in results/pebbleDischarge_<...>_wetDry.png.
+--liggghts adds the dry discharge of the same bed in LIGGGHTS (validation/
+liggghts, the linear spring-dashpot with tangential history; rows of
+medium dryLIGGGHTS, plotted with the dry run). --law linear sets our
+contacts to the same linear spring-dashpot (linearSpringDashpot, with
+LIGGGHTS' conventions, as the silo's cross-check), its stiffness per pair
+the overlap-volume law's force at an overlap of 1 % of d over that overlap,
+so that the two codes run the same physics.
 
 The paper's studies: its damping coefficients 0, 0.07 and 0.7 (of the
 critical damping; restitution exp(-pi z/sqrt(1 - z^2)) of a linear spring:
@@ -23,13 +37,18 @@ few hours on 2 cores; --end-time gives its early rate sooner.
 """
 
 import argparse
+import math
 import re
 import shutil
 import subprocess
+import sys
 import time
 
 from common import RESULTS, ROOT, RUNS, foam_environment, merge_row
 import pebbleDischarge
+
+sys.path.insert(0, str(ROOT / "validation" / "liggghts"))
+import run_liggghts  # noqa: E402
 
 # The full scene: the paper's reservoir (406 mm) with the same opening and
 # cone; the reservoir's cylinder tall enough for the fill's lattice of 2500
@@ -38,12 +57,27 @@ FULL = {"R": 0.203, "coneBase": 0.39, "coneTop": 0.542, "outletZ": 0.642,
 PEBBLES = {"reduced": 250, "full": 2500}
 # The overlap-volume stiffness at stiffness factor 1 (constant/particleProperties)
 HERTZ_STIFFNESS = 2.85e11
-HEADER = ["scene", "cellsPerDiameter", "restitution", "stiffnessFactor", "pebbles",
+# The buoyancy-reduced gravity of the dry runs, g (rho_f/rho_s - 1), up
+DRY_GRAVITY = 1.8271
+FRICTION = 0.37
+HEADER = ["scene", "medium", "law", "cellsPerDiameter", "restitution", "stiffnessFactor", "pebbles",
           "endTime", "left", "chuteFlux", "bedFlux", "balance", "wallTime"]
 
 
-def make_case(scene, n, restitution, factor):
-    case = RUNS / f"pebbleDischarge_{scene}_{n}_e{restitution:g}_k{factor:g}"
+def linear_stiffness(factor, d, wall):
+    """The linear spring's stiffness [N/m] that gives the overlap-volume
+    law's force at an overlap of 1 % of d: k V(delta)/delta, with V the
+    lens of two spheres or the cap a plane cuts off one."""
+    a, delta = d/2, 0.01*d
+    volume = (math.pi*delta**2*(3*a - delta)/3 if wall
+              else math.pi*(6*a - delta)*delta**2/12)
+    return factor*HERTZ_STIFFNESS*volume/delta
+
+
+def make_case(scene, n, restitution, factor, law, medium):
+    case = RUNS / (f"pebbleDischarge_{scene}_{n}_e{restitution:g}_k{factor:g}"
+                   + ("_linear" if law == "linear" else "")
+                   + ("_dry" if medium == "dry" else ""))
     if case.exists():
         shutil.rmtree(case)
     shutil.copytree(ROOT / "tutorials" / "pebbleDischarge", case,
@@ -62,13 +96,49 @@ def make_case(scene, n, restitution, factor):
     text = re.sub(r"^(\s+restitution\s+)[^;]*;", rf"\g<1>{restitution};", text, flags=re.M)
     text = re.sub(r"^(\s+stiffness\s+)[^;]*;", rf"\g<1>{factor*HERTZ_STIFFNESS:.6g};",
                   text, flags=re.M)
+    if law == "linear":
+        d = pebbleDischarge.geometry(case)["d"]
+        for pair, wall in (("pebbles", False), ("pebbleWall", True)):
+            block = re.search(rf"^        {pair}\n        \{{.*?^        \}}", text,
+                              re.M | re.S).group(0)
+            linear = re.sub(r"law\s+overlapVolume;", "law         linearSpringDashpot;", block)
+            linear = re.sub(r"stiffness\s+[^;]*;",
+                            f"stiffness   {linear_stiffness(factor, d, wall):.6g};\n"
+                            "            tangential  spring;\n"
+                            "            frictionLimit spring;\n"
+                            f"            tangentialStiffnessRatio {2/7!r};\n"
+                            "            tangentialDampingRatio 1;\n"
+                            f"            clipNormalForce {'true' if run_liggghts.LIMIT_FORCE else 'false'};",
+                            linear)
+            text = text.replace(block, linear)
     props.write_text(text)
     return case
 
 
+def liggghts_discharge(case, end_time, restitution, factor):
+    """LIGGGHTS on the case's bed and geometry, dry, with the linear
+    spring-dashpot of --law linear: the summary and the loop time."""
+    g = pebbleDischarge.geometry(case)
+    d = g["d"]
+    bed = [row for row in (line.split() for line in
+                           (case / "constant/pebbleBed.dat").read_text().splitlines())
+           if row and not row[0].startswith("#")]
+    bed = [[float(v) for v in row] for row in bed]
+    kn = {"particleParticle": linear_stiffness(factor, d, False),
+          "particleWall": linear_stiffness(factor, d, True)}
+    times, ids, rows, loop = run_liggghts.pebble_run(
+        case / "liggghts", g, bed, kn, restitution, FRICTION, DRY_GRAVITY, end_time)
+    mass = pebbleDischarge.PEBBLE_DENSITY*math.pi*d**3/6
+    names = ids.astype(str)
+    outlet = pebbleDischarge.departures(times, names, mass)
+    return pebbleDischarge.summary_of(g, outlet, (times, names, rows)), loop
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--scene", choices=PEBBLES, default="reduced")
+    parser.add_argument("--medium", choices=("wet", "dry", "both"), default="wet")
+    parser.add_argument("--liggghts", action="store_true")
+    parser.add_argument("--law", choices=("overlapVolume", "linear"), default="overlapVolume")
     parser.add_argument("--end-time", type=float, default=6)
     parser.add_argument("--np", type=int, default=1)
     parser.add_argument("--restitution", type=float, default=0.8)
@@ -77,25 +147,49 @@ def main():
     args = parser.parse_args()
     env = foam_environment()
     for n in args.resolutions:
-        case = make_case(args.scene, n, args.restitution, args.stiffness_factor)
-        label = f"{args.scene}, N = {n}, e = {args.restitution:g}, factor {args.stiffness_factor:g}"
-        start = time.perf_counter()
-        result = subprocess.run(
-            [str(case / "Allrun"), str(n), str(args.np), str(args.end_time),
-             str(PEBBLES[args.scene])], env=env, capture_output=True, text=True)
-        wall = time.perf_counter() - start
-        if result.returncode != 0:
-            raise SystemExit(f"{case}: Allrun failed\n{result.stdout}{result.stderr}")
-        s = pebbleDischarge.summary(case)
-        pebbleDischarge.plot([s], RESULTS / f"{case.name}.png", [label])
-        print("\n".join(pebbleDischarge.report(case, s)))
-        print(f"  wall time  {wall:.0f} s (Allrun: mesh, fill, discharge)")
-        balance = s["balance"]
-        merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
-                  [args.scene, n, args.restitution, args.stiffness_factor,
-             PEBBLES[args.scene], args.end_time, s["left"],
-                   f"{s['chute_flux']:.2f}", f"{s['bed_flux']:.2f}", f"{balance:.4f}",
-                   f"{wall:.0f}"], key_columns=4)
+        case = make_case(args.scene, n, args.restitution, args.stiffness_factor, args.law,
+                         args.medium)
+        label = (f"{args.scene}, N = {n}, e = {args.restitution:g}, "
+                 f"factor {args.stiffness_factor:g}, {args.law}")
+        runs = []
+        if args.medium in ("wet", "both"):
+            runs.append(("wet", case, n, [str(case / "Allrun"), str(n), str(args.np),
+                                          str(args.end_time), str(PEBBLES[args.scene])]))
+        if args.medium in ("dry", "both"):
+            runs.append(("dry", case / "dry", 0, [str(case / "Allrun.dry"), str(args.end_time),
+                                                  str(PEBBLES[args.scene])]))
+        summaries = []
+
+        def record(medium, law, cells, s, wall):
+            summaries.append((f"{label if medium != 'dryLIGGGHTS' else 'LIGGGHTS'}, {medium}", s))
+            merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
+                      [args.scene, medium, law, cells, args.restitution, args.stiffness_factor,
+                       PEBBLES[args.scene], args.end_time, s["left"],
+                       f"{s['chute_flux']:.2f}", f"{s['bed_flux']:.2f}",
+                       f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=6)
+
+        for medium, run_dir, cells, command in runs:
+            start = time.perf_counter()
+            result = subprocess.run(command, env=env, capture_output=True, text=True)
+            wall = time.perf_counter() - start
+            if result.returncode != 0:
+                raise SystemExit(f"{case}: {command[0]} failed\n{result.stdout}{result.stderr}")
+            s = pebbleDischarge.summary(run_dir)
+            print("\n".join(pebbleDischarge.report(run_dir, s)))
+            print(f"  wall time  {wall:.0f} s ({command[0].split('/')[-1]}, with the set-up"
+                  " where it made it)")
+            record(medium, args.law, cells, s, wall)
+        if args.liggghts:
+            if not (case / "constant/pebbleBed.dat").exists():
+                raise SystemExit("--liggghts needs the bed: with --medium dry or both")
+            s, loop = liggghts_discharge(case, args.end_time, args.restitution,
+                                         args.stiffness_factor)
+            print("\n".join(pebbleDischarge.report(case / "liggghts", s)))
+            print(f"  wall time  {loop:.0f} s (LIGGGHTS' loop)")
+            record("dryLIGGGHTS", "linear", 0, s, loop)
+        suffix = {"wet": "", "dry": "", "both": "_wetDry"}[args.medium]
+        pebbleDischarge.plot([s for _, s in summaries], RESULTS / f"{case.name}{suffix}.png",
+                             [lab for lab, _ in summaries])
 
 
 if __name__ == "__main__":

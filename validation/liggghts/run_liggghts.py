@@ -39,9 +39,10 @@ import numpy as np
 from floor_stl import plate_with_hole, write_stl
 from scenes import (DENSITY, DIAMETER, DT, EFFECTIVE_MASS, GAP, GRAVITY, HEAD_ON,
                     LIMIT_FORCE, MASS, RADIUS, RESTITUTIONS, SILO, WALL, beverloo,
-                    contact, contact_time)
+                    contact, contact_time, damping)
 
 HERE = Path(__file__).resolve().parent
+PEBBLE_DENSITY = 843.0
 RUNS = HERE / "runs"
 RESULTS = HERE.parent / "results"
 
@@ -50,7 +51,7 @@ OPTIONS = (f"absolute_damping on tangential_damping on "
            f"limitForce {'on' if LIMIT_FORCE else 'off'}")
 
 
-def header(lo, hi, c, gravity, dt=DT):
+def header(lo, hi, c, gravity, dt=DT, skin=0.2*DIAMETER):
     """Common set-up; atom type 1 = spheres, 2 = walls."""
     pp, pw = c["particleParticle"], c["particleWall"]
 
@@ -66,7 +67,7 @@ newton          off
 communicate     single vel yes
 region          domain block {lo[0]} {hi[0]} {lo[1]} {hi[1]} {lo[2]} {hi[2]} units box
 create_box      2 domain
-neighbor        {0.2*DIAMETER!r} bin
+neighbor        {skin!r} bin
 neigh_modify    delay 0
 fix             kn all property/global kn peratomtypepair 2 {matrix('kn')}
 fix             kt all property/global kt peratomtypepair 2 {matrix('kt')}
@@ -327,6 +328,87 @@ def silo():
     print(f"silo: rate fitted between {lo:.0%} and {hi:.0%} of the charge")
     for name, value in summary.items():
         print(f"  {name:22s} {value:.6g}")
+
+
+# ------------------------------------------------------------------ pebbles
+def frustum(z0, r0, z1, r1, segments=128):
+    """Triangles (n, 3, 3) of the side of a cone frustum (or a cylinder)
+    about the z axis, from radius r0 at z0 to r1 at z1; polygons of the
+    circles' area."""
+    scale = np.sqrt(2*np.pi/(segments*np.sin(2*np.pi/segments)))
+    theta = 2*np.pi*np.arange(segments + 1)/segments
+    ring = np.stack([np.cos(theta), np.sin(theta), np.zeros_like(theta)], axis=1)
+    low = ring*[r0*scale, r0*scale, 1] + [0, 0, z0]
+    high = ring*[r1*scale, r1*scale, 1] + [0, 0, z1]
+    tris = []
+    for i in range(segments):
+        tris.append([low[i], low[i + 1], high[i + 1]])
+        tris.append([low[i], high[i + 1], high[i]])
+    return np.array(tris)
+
+
+def pebble_script(g, bed, c, gravity, dt, end_time, sample_every):
+    """The pebble discharge without water (validate_pebbleDischarge.py
+    --liggghts): the bed, upward buoyancy-reduced gravity, the reservoir
+    (cylinder), floor, cone and chute of the case's constant/geometry; a
+    pebble leaves when its centre passes the outlet (the top of the box)."""
+    R, d = g["R"], g["d"]
+    script = header((-R - d, -R - d, -d), (R + d, R + d, g["outletZ"]), c, gravity=False,
+                    dt=dt, skin=0.2*d)
+    script += f"fix             gravity all gravity {float(gravity)!r} vector 0 0 1\n"
+    script += wall("reservoir", f"zcylinder {R!r} 0", 0)
+    script += wall("floor", "zplane", 0.0)
+    script += f"""\
+fix             conemesh all mesh/surface file cone.stl type 2
+fix             chutemesh all mesh/surface file chute.stl type 2
+fix             funnel all wall/gran {MODEL} mesh n_meshes 2 meshes conemesh chutemesh {OPTIONS}
+"""
+    for x, y, z, _ in bed:
+        script += f"create_atoms    1 single {float(x)!r} {float(y)!r} {float(z)!r} units box\n"
+    every = round(sample_every/dt)
+    return script + f"""\
+set             atom * diameter {d!r} density {PEBBLE_DENSITY!r}
+fix             integr all nve/sphere
+thermo_style    custom step atoms ke
+thermo_modify   lost ignore norm no
+thermo          {every*10}
+dump            traj all custom {every} traj.dump id x y z vx vy vz
+dump_modify     traj sort id format "%d %.9e %.9e %.9e %.9e %.9e %.9e"
+print           "PHASE discharge"
+run             {round(end_time/dt)}
+"""
+
+
+def pebble_run(case, g, bed, kn, restitution, friction, gravity, end_time,
+               sample_every=0.01):
+    """LIGGGHTS on a pebble bed (x y z radius rows) in `case`, with the
+    linear spring-dashpot (kn [N/m] per pair, particleParticle and
+    particleWall; kt = 2/7 kn, the damping of the given restitution for
+    each pair's effective mass): history times, ids and
+    rows (x y z u v w) of the pebbles present, and the loop time [s]."""
+    mass = PEBBLE_DENSITY*np.pi/6*g["d"]**3
+    c = {}
+    for pair, m_eff in (("particleParticle", mass/2), ("particleWall", mass)):
+        gamma_n = damping(restitution, m_eff, kn[pair])
+        c[pair] = dict(kn=kn[pair], kt=2/7*kn[pair], gamma_n=gamma_n, gamma_t=gamma_n,
+                       mu=friction)
+    # 50 steps a collision, of the shorter of the two pairs
+    dt = min(contact_time(restitution, mass/2, kn["particleParticle"]),
+             contact_time(restitution, mass, kn["particleWall"]))/50
+    case.mkdir(parents=True, exist_ok=True)
+    write_stl(case / "cone.stl", frustum(g["coneBase"], g["R"], g["coneTop"], g["r"]), "cone")
+    write_stl(case / "chute.stl", frustum(g["coneTop"], g["r"], g["lidZ"], g["r"]), "chute")
+    log = liggghts(case, pebble_script(g, bed, c, gravity, dt, end_time, sample_every))
+    steps, times, ids, rows = [], [], [], []
+    for block in (case / "traj.dump").read_text().split("ITEM: TIMESTEP\n")[1:]:
+        lines = block.splitlines()
+        n = int(lines[2])
+        frame = np.array([line.split() for line in lines[8:8 + n]], float).reshape(n, 7)
+        times.append(np.full(n, int(lines[0])*dt))
+        ids.append(frame[:, 0].astype(int))
+        rows.append(frame[:, 1:])
+    return (np.concatenate(times), np.concatenate(ids), np.concatenate(rows),
+            sum(t for _, t, _ in loop_times(log)))
 
 
 def fit_rate(t, mass, m0, m1):
