@@ -186,9 +186,9 @@ def last_state(case):
 
 def test_pebble_discharge_fills_its_bed_and_runs_serial_and_parallel(pebble_runs):
     """The fill packs 250 pebbles at rest under the cone and the barrier,
-    without overlaps beyond 1 % of d; the discharge starts (the pebbles in
-    the opening rise) in serial and on 2 ranks, the latter reusing the
-    bed."""
+    without overlaps beyond 1 % of d; the chute is a tube of walls for the
+    water (baffles); the discharge starts (the pebbles in the opening rise)
+    in serial and on 2 ranks, the latter reusing the bed."""
     (serial, serial_out), (parallel, parallel_out) = pebble_runs["serial"], pebble_runs["parallel"]
     assert "Bed: filled" in serial_out and "Bed: filled" not in parallel_out
     bed = np.loadtxt(serial / "constant/pebbleBed.dat")
@@ -201,6 +201,10 @@ def test_pebble_discharge_fills_its_bed_and_runs_serial_and_parallel(pebble_runs
     assert bed[:, 2].max() < 0.2106 - 0.49*d
     fill_speed = float(re.findall(r"largest speed (\S+) m/s", (serial / "log.fill").read_text())[-1])
     assert fill_speed < 0.01
+    boundary = (serial / "constant/polyMesh/boundary").read_text()
+    for side in ("chuteWall_master", "chuteWall_slave"):
+        faces = re.search(side + r"\s*\{[^}]*nFaces\s+(\d+);", boundary)
+        assert faces and int(faces.group(1)) > 0, f"the chute's tube ({side}) is missing"
     for case in (serial, parallel):
         state = last_state(case)
         assert len(state) == 250

@@ -60,7 +60,11 @@ HERTZ_STIFFNESS = 2.85e11
 # The buoyancy-reduced gravity of the dry runs, g (rho_f/rho_s - 1), up
 DRY_GRAVITY = 1.8271
 FRICTION = 0.37
-HEADER = ["scene", "medium", "law", "cellsPerDiameter", "restitution", "stiffnessFactor", "pebbles",
+# The tutorial's chute: a tube of walls for the water (system/
+# topoSetDict.chute); rows of "open" are runs whose chute was a contact-only
+# surface, which the water passed
+CHUTE = "tube"
+HEADER = ["scene", "medium", "law", "chute", "cellsPerDiameter", "restitution", "stiffnessFactor", "pebbles",
           "endTime", "left", "chuteFlux", "bedFlux", "balance", "wallTime"]
 
 
@@ -163,10 +167,11 @@ def main():
         def record(medium, law, cells, s, wall):
             summaries.append((f"{label if medium != 'dryLIGGGHTS' else 'LIGGGHTS'}, {medium}", s))
             merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
-                      [args.scene, medium, law, cells, args.restitution, args.stiffness_factor,
+                      [args.scene, medium, law, CHUTE if medium == "wet" else "-", cells,
+                       args.restitution, args.stiffness_factor,
                        PEBBLES[args.scene], args.end_time, s["left"],
                        f"{s['chute_flux']:.2f}", f"{s['bed_flux']:.2f}",
-                       f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=6)
+                       f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=7)
 
         for medium, run_dir, cells, command in runs:
             start = time.perf_counter()
