@@ -252,3 +252,23 @@ contact
     state = (case.path / last / "uniform/particles").read_text()
     z = float(re.search(r"position\s+\(\S+ \S+ (\S+)\)", state).group(1))
     assert z > 0.045
+
+
+def test_particle_leaving_a_dry_mesh_without_an_outlet_stops_the_run(tmp_path, foam_env):
+    """Dry (dlmDEMFoam) the mesh bounds the scene: with meshWalls false
+    nothing holds the pile at the floor, and once a sphere's centre is
+    below it the run stops with an error naming the sphere and suggesting
+    an outlet, after writing the state of that time (LIGGGHTS, too, stops on
+    lost atoms unless told to ignore them). It used to fall on silently."""
+    case = dry_scene(tmp_path, foam_env, "dryNoOutlet", leaver=False, outlet=False)
+    case.set("constant/particleProperties", "contact/meshWalls", "false")
+    result = case.run("dlmDEMFoam", check=False)
+    assert result.returncode != 0
+    named = re.search(r"Particle (\w+) left the mesh", result.log)
+    assert named and named.group(1) in ("a", "b", "c")
+    assert "outlets" in result.log
+    last = case.times()[-1]
+    assert 0 < float(last) < 0.1
+    state = (case.path / last / "uniform/particles").read_text()
+    heights = [float(z) for z in re.findall(r"position\s+\(\S+ \S+ (\S+)\)", state)]
+    assert min(heights) < 0

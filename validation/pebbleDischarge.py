@@ -119,7 +119,11 @@ def summary(case_dir):
     """The discharge's figures of a case (pimpleDLMFoam or dlmDEMFoam): a
     dict of the fluxes, their balance, the bed bottom's rise and the series
     for the plots."""
-    return summary_of(geometry(case_dir), outlet_record(case_dir), history(case_dir))
+    pebble_history = history(case_dir)
+    if not len(pebble_history[0]):
+        raise SystemExit(f"{case_dir}: no pebble history (postProcessing/particles/"
+                         "*/particles.dat): has the case run?")
+    return summary_of(geometry(case_dir), outlet_record(case_dir), pebble_history)
 
 
 def departures(times, names, mass):

@@ -87,6 +87,11 @@ contact
         floor {{ type surface; file "floor.stl"; }}
     }}
 }}
+// The spheres that fell out leave before the mesh's bottom (z = -0.5)
+outlets
+{{
+    below {{ type plane; point (0 0 -0.4); normal (0 0 -1); }}
+}}
 """)
     write(case.path / "constant/g", "uniformDimensionedVectorField", "g",
           "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n")
@@ -110,10 +115,11 @@ def discharge(env, end_time, packing, name="silo", friction_limit="spring"):
     case, n = make_case(env, end_time, packing, name, friction_limit)
     seconds = timed_run(case, "dlmDEMFoam")
     history = case.history()
-    times = next(iter(history.values()))[:, 0]
-    below = np.zeros_like(times)
-    for h in history.values():
-        below += h[:, 3] < 0
+    # A sphere is out from its first history time below the floor (it
+    # falls on, through the outlet at z = -0.4 m, which ends its history)
+    times = max((h[:, 0] for h in history.values()), key=len)
+    first_below = [h[h[:, 3] < 0, 0].min() for h in history.values() if (h[:, 3] < 0).any()]
+    below = np.searchsorted(np.sort(first_below), times, side="right")
     t = np.concatenate([[0.0], times])
     mass = np.concatenate([[0.0], below*MASS])
     charge = n*MASS

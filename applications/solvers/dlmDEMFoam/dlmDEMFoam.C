@@ -15,7 +15,9 @@ Description
     fraction is computed.
 
     Each step the free particles take gravity's impulse, then the contact
-    sub-steps move them (particleContact). The output is pimpleDLMFoam's:
+    sub-steps move them (particleContact). A particle whose centre leaves
+    the mesh, which bounds the scene, stops the run after its state is
+    written, unless an outlet removed it. The output is pimpleDLMFoam's:
     postProcessing/particles, VTK/particles and <time>/uniform/particles for
     restart. At the end the run prints its particle-steps per second.
 
@@ -86,20 +88,27 @@ int main(int argc, char *argv[])
         particles.setProjected();
         particles.move();
         particles.removeLeaving();
+        particles.checkInMesh();
         particles.printSummary();
 
-        // The last step writes its state, whatever the write interval
+        // The last step and a stop (a particle out of the mesh) write their
+        // state, whatever the write interval
+        const bool stopping = particles.leftMesh();
         const bool lastStep = progress.lastStep();
-        particles.writeStep(lastStep);
+        particles.writeStep(stopping || lastStep);
         particleSteps += particles.particles().size();
 
-        if (lastStep)
+        if (stopping || lastStep)
         {
             runTime.writeNow();
         }
         else
         {
             runTime.write();
+        }
+        if (stopping)
+        {
+            particles.failOutsideMesh();
         }
         runTime.printExecutionTime(Info);
     }

@@ -571,7 +571,7 @@ void Foam::dlmParticleCloud::failOutsideMesh() const
     FatalErrorInFunction
         << "Particle " << p.name() << " left the mesh at t = "
         << mesh_.time().value() << " (position " << p.position()
-        << ", velocity " << p.velocity() << "), out of the flow. A particle"
+        << ", velocity " << p.velocity() << "), which bounds the scene. A particle"
         << " leaves the mesh when an overlap throws it out, at an absurd"
         << " velocity, or where no wall holds it (meshWalls false): check"
         << " the particles' overlaps, velocities and walls and gravity"
