@@ -1,6 +1,7 @@
 """Helpers of the validation scripts that carry physics: the conversion of
 drag correlations for random arrays of spheres to the DLM paper's Lambda,
-and the layered Ergun estimates of the anisotropic beds."""
+and the layered Ergun estimates of the anisotropic beds; and the results
+tables' merge."""
 
 import pathlib
 import sys
@@ -10,7 +11,7 @@ import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "validation"))
 from common import (beetstra_drag, correlation_lambda, ergun_lambda,  # noqa: E402
-                    tang_drag)
+                    merge_row, tang_drag)
 import validate_anisotropicBed as anisotropic  # noqa: E402
 
 
@@ -62,3 +63,21 @@ def test_layered_ergun_of_a_uniform_lattice_is_ergun_at_its_porosity(width):
         assert 0.7 < eps < 0.8
         assert anisotropic.layered_ergun(centres, axis, series, box) == \
             pytest.approx(anisotropic.ergun_gradient(eps, anisotropic.U), rel=1e-9)
+
+
+def test_merge_row_replaces_by_key_adds_columns_and_refuses_other_columns(tmp_path):
+    """A row replaces the one with the same key; a header that adds columns
+    at the end pads the old rows with nan; a header with a column inserted
+    (a newer script) is refused, with the file unchanged, where merging
+    would have shifted every column after it."""
+    path = tmp_path / "results.csv"
+    merge_row(path, ["case", "N", "value"], ["a", 4, 1.0])
+    merge_row(path, ["case", "N", "value"], ["a", 4, 2.0])
+    merge_row(path, ["case", "N", "value"], ["a", 6, 3.0])
+    merge_row(path, ["case", "N", "value", "time"], ["b", 4, 4.0, 10])
+    assert path.read_text().splitlines() == [
+        "case,N,value,time", "a,4.0,2.0,nan", "a,6.0,3.0,nan", "b,4,4.0,10"]
+    before = path.read_text()
+    with pytest.raises(SystemExit, match="not this script's"):
+        merge_row(path, ["case", "medium", "N", "value", "time"], ["c", "wet", 4, 5.0, 1])
+    assert path.read_text() == before

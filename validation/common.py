@@ -126,11 +126,22 @@ def stored_rows(path):
 def merge_row(path, header, row, key_columns=2, sort_key=None):
     """Put row into a results CSV, replacing the row with the same first
     key_columns values (the case and resolution), rows sorted; older rows
-    without the header's last columns get nan there. The results folder is
-    locked meanwhile, so that runs in parallel keep each other's rows."""
+    without the header's last columns get nan there. A stored header that
+    is not the start of this one (columns renamed or inserted, say by a
+    newer version of the script) is an error: merging would shift the
+    columns. The results folder is locked meanwhile, so that runs in
+    parallel keep each other's rows."""
     folder = os.open(path.parent, os.O_RDONLY)
     try:
         fcntl.flock(folder, fcntl.LOCK_EX)
+        if path.exists():
+            stored = path.read_text().split("\n", 1)[0].split(",")
+            if stored != list(header[:len(stored)]):
+                raise SystemExit(
+                    f"{path}: its columns ({','.join(stored)}) are not this script's"
+                    f" ({','.join(header)}): the row is not written ({row}); update"
+                    " the file's rows to the new columns, or run the script's"
+                    " current version")
         rows = [r + [float("nan")]*(len(header) - len(r)) for r in stored_rows(path)
                 if r[:key_columns] != row[:key_columns]]
         rows.append(row)
