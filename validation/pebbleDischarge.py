@@ -82,15 +82,13 @@ def window_rate(t, mass, start, end):
 def bed_crossings(times, names, rows, z_section, mass):
     """Times at which pebbles first cross the section z_section upward, and
     the cumulative mass through it."""
-    order = np.lexsort((times, names))
-    names_sorted, times_sorted = names[order], times[order]
-    above = rows[order, 2] > z_section
-    first_above = {}
-    for name, time in zip(names_sorted[above], times_sorted[above]):
-        first_above.setdefault(name, time)
-    start = set(names[(times == times.min()) & (rows[:, 2] > z_section)])
-    crossed = sorted(t for name, t in first_above.items() if name not in start)
-    return np.array(crossed), mass*np.arange(1, len(crossed) + 1)
+    above = rows[:, 2] > z_section
+    above_names, index = np.unique(names[above], return_inverse=True)
+    first_above = np.full(len(above_names), np.inf)
+    np.minimum.at(first_above, index, times[above])
+    start = np.isin(above_names, names[(times == times.min()) & above])
+    crossed = np.sort(first_above[~start])
+    return crossed, mass*np.arange(1, len(crossed) + 1)
 
 
 def bed_bottom(times, names, rows, radius):
@@ -131,12 +129,11 @@ def departures(times, names, mass):
     longer listed: the first history time without it, and the cumulative
     mass (LIGGGHTS' lost atoms)."""
     sampled = np.unique(times)
-    last = {}
-    for time, name in zip(times, names):
-        last[name] = max(time, last.get(name, time))
-    left = sorted(sampled[np.searchsorted(sampled, t) + 1] for t in last.values()
-                  if t < sampled[-1])
-    return np.array(left), mass*np.arange(1, len(left) + 1)
+    _, index = np.unique(names, return_inverse=True)
+    last = np.full(index.max() + 1, -np.inf)
+    np.maximum.at(last, index, times)
+    left = np.sort(sampled[np.searchsorted(sampled, last[last < sampled[-1]]) + 1])
+    return left, mass*np.arange(1, len(left) + 1)
 
 
 def summary_of(g, outlet, pebble_history):

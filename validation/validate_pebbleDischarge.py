@@ -44,6 +44,8 @@ import subprocess
 import sys
 import time
 
+import numpy as np
+
 from common import RESULTS, ROOT, RUNS, foam_environment, merge_row
 import pebbleDischarge
 
@@ -57,9 +59,6 @@ FULL = {"R": 0.203, "coneBase": 0.39, "coneTop": 0.542, "outletZ": 0.642,
 PEBBLES = {"reduced": 250, "full": 2500}
 # The overlap-volume stiffness at stiffness factor 1 (constant/particleProperties)
 HERTZ_STIFFNESS = 2.85e11
-# The buoyancy-reduced gravity of the dry runs, g (rho_f/rho_s - 1), up
-DRY_GRAVITY = 1.8271
-FRICTION = 0.37
 # The tutorial's chute: a tube of walls for the water (system/
 # topoSetDict.chute); rows of "open" are runs whose chute was a contact-only
 # surface, which the water passed
@@ -119,23 +118,31 @@ def make_case(scene, n, restitution, factor, law, medium):
     return case
 
 
+def entry(path, keyword):
+    """The first value of keyword in a dictionary file, as text."""
+    return re.search(rf"^\s*{keyword}\s+([^;]+);", path.read_text(), re.M).group(1)
+
+
 def liggghts_discharge(case, end_time, restitution, factor):
-    """LIGGGHTS on the case's bed and geometry, dry, with the linear
-    spring-dashpot of --law linear: the summary and the loop time."""
+    """LIGGGHTS on the case's bed and geometry, dry (the gravity of its
+    dry/constant/g, the pebbles' friction of constant/particleProperties),
+    with the linear spring-dashpot of --law linear: the summary and the
+    loop time."""
     g = pebbleDischarge.geometry(case)
     d = g["d"]
-    bed = [row for row in (line.split() for line in
-                           (case / "constant/pebbleBed.dat").read_text().splitlines())
-           if row and not row[0].startswith("#")]
-    bed = [[float(v) for v in row] for row in bed]
+    bed = np.loadtxt(case / "constant/pebbleBed.dat", ndmin=2)
     kn = {"particleParticle": linear_stiffness(factor, d, False),
           "particleWall": linear_stiffness(factor, d, True)}
+    gravity = float(entry(case / "dry/constant/g", "value").strip("()").split()[2])
+    friction = float(entry(case / "constant/particleProperties", "friction"))
     times, ids, rows, loop = run_liggghts.pebble_run(
-        case / "liggghts", g, bed, kn, restitution, FRICTION, DRY_GRAVITY, end_time)
+        case / "liggghts", g, bed, pebbleDischarge.PEBBLE_DENSITY, kn, restitution,
+        friction, gravity, end_time)
     mass = pebbleDischarge.PEBBLE_DENSITY*math.pi*d**3/6
     names = ids.astype(str)
     outlet = pebbleDischarge.departures(times, names, mass)
     return pebbleDischarge.summary_of(g, outlet, (times, names, rows)), loop
+
 
 def main():
     parser = argparse.ArgumentParser()
@@ -192,7 +199,7 @@ def main():
             print("\n".join(pebbleDischarge.report(case / "liggghts", s)))
             print(f"  wall time  {loop:.0f} s (LIGGGHTS' loop)")
             record("dryLIGGGHTS", "linear", 0, s, loop)
-        suffix = {"wet": "", "dry": "", "both": "_wetDry"}[args.medium]
+        suffix = "_wetDry" if args.medium == "both" else ""
         pebbleDischarge.plot([s for _, s in summaries], RESULTS / f"{case.name}{suffix}.png",
                              [lab for lab, _ in summaries])
 

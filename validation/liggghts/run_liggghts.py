@@ -42,7 +42,6 @@ from scenes import (DENSITY, DIAMETER, DT, EFFECTIVE_MASS, GAP, GRAVITY, HEAD_ON
                     contact, contact_time, damping)
 
 HERE = Path(__file__).resolve().parent
-PEBBLE_DENSITY = 843.0
 RUNS = HERE / "runs"
 RESULTS = HERE.parent / "results"
 
@@ -347,7 +346,7 @@ def frustum(z0, r0, z1, r1, segments=128):
     return np.array(tris)
 
 
-def pebble_script(g, bed, c, gravity, dt, end_time, sample_every):
+def pebble_script(g, bed, density, c, gravity, dt, end_time, sample_every):
     """The pebble discharge without water (validate_pebbleDischarge.py
     --liggghts): the bed, upward buoyancy-reduced gravity, the reservoir
     (cylinder), floor, cone and chute of the case's constant/geometry; a
@@ -367,7 +366,7 @@ fix             funnel all wall/gran {MODEL} mesh n_meshes 2 meshes conemesh chu
         script += f"create_atoms    1 single {float(x)!r} {float(y)!r} {float(z)!r} units box\n"
     every = round(sample_every/dt)
     return script + f"""\
-set             atom * diameter {d!r} density {PEBBLE_DENSITY!r}
+set             atom * diameter {d!r} density {float(density)!r}
 fix             integr all nve/sphere
 thermo_style    custom step atoms ke
 thermo_modify   lost ignore norm no
@@ -379,14 +378,14 @@ run             {round(end_time/dt)}
 """
 
 
-def pebble_run(case, g, bed, kn, restitution, friction, gravity, end_time,
+def pebble_run(case, g, bed, density, kn, restitution, friction, gravity, end_time,
                sample_every=0.01):
-    """LIGGGHTS on a pebble bed (x y z radius rows) in `case`, with the
+    """LIGGGHTS on a pebble bed (x y z radius rows; density [kg/m3]) in `case`, with the
     linear spring-dashpot (kn [N/m] per pair, particleParticle and
     particleWall; kt = 2/7 kn, the damping of the given restitution for
     each pair's effective mass): history times, ids and
     rows (x y z u v w) of the pebbles present, and the loop time [s]."""
-    mass = PEBBLE_DENSITY*np.pi/6*g["d"]**3
+    mass = density*np.pi/6*g["d"]**3
     c = {}
     for pair, m_eff in (("particleParticle", mass/2), ("particleWall", mass)):
         gamma_n = damping(restitution, m_eff, kn[pair])
@@ -398,8 +397,10 @@ def pebble_run(case, g, bed, kn, restitution, friction, gravity, end_time,
     case.mkdir(parents=True, exist_ok=True)
     write_stl(case / "cone.stl", frustum(g["coneBase"], g["R"], g["coneTop"], g["r"]), "cone")
     write_stl(case / "chute.stl", frustum(g["coneTop"], g["r"], g["lidZ"], g["r"]), "chute")
-    log = liggghts(case, pebble_script(g, bed, c, gravity, dt, end_time, sample_every))
-    steps, times, ids, rows = [], [], [], []
+    log = liggghts(case, pebble_script(g, bed, density, c, gravity, dt, end_time,
+                                       sample_every))
+    # Not read_dump: the number of pebbles falls as they leave
+    times, ids, rows = [], [], []
     for block in (case / "traj.dump").read_text().split("ITEM: TIMESTEP\n")[1:]:
         lines = block.splitlines()
         n = int(lines[2])

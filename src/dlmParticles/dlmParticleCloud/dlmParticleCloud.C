@@ -569,9 +569,9 @@ void Foam::dlmParticleCloud::failOutsideMesh() const
 {
     const dlmParticle& p = particles_[leftMesh_];
     FatalErrorInFunction
-        << "Particle " << p.name() << " left the mesh at t = "
-        << mesh_.time().value() << " (position " << p.position()
-        << ", velocity " << p.velocity() << "), which bounds the scene. A particle"
+        << "Particle " << p.name() << " left the mesh, which bounds the"
+        << " scene, at t = " << mesh_.time().value() << " (position "
+        << p.position() << ", velocity " << p.velocity() << "). A particle"
         << " leaves the mesh when an overlap throws it out, at an absurd"
         << " velocity, or where no wall holds it (meshWalls false): check"
         << " the particles' overlaps, velocities and walls and gravity"
