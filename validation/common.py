@@ -50,16 +50,18 @@ def write_table(path, header, rows):
             out.write(",".join(str(v) for v in row) + "\n")
 
 
-def plot_speed_error(ax, series, target=None):
+def plot_speed_error(ax, series, target=None, fmt="o-", colors=None):
     """Error [%] against wall time [s] on log axes, one line per series.
 
     series: {label: [(wall_s, abs_rel_error, point_label), ...]}
+    colors: {label: colour}, else matplotlib's cycle
     """
     for label, points in series.items():
         points = sorted(points)
         wall = [p[0] for p in points]
         err = [100*p[1] for p in points]
-        ax.loglog(wall, err, "o-", label=label)
+        color = colors.get(label) if colors else None
+        ax.loglog(wall, err, fmt, label=label, color=color)
         for w, e, (_, _, name) in zip(wall, err, points):
             ax.annotate(str(name), (w, e), fontsize=7)
     if target is not None:

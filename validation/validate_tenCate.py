@@ -7,11 +7,15 @@ RMS deviation of the velocity from the digitised curve (up to the end of the
 run), and the wall time. Writes results/tenCate.csv, results/tenCate_<E>.png
 (velocity and gap against time) and results/tenCate_speed_error.png.
 
-    validation/validate_tenCate.py [--cases E1,E2] [--np 2] [N ...]
-                                   (default all cases, N = 6 8 12)
+    validation/validate_tenCate.py [--cases E1,E2] [--np 2] [--step-factor F]
+                                   [N ...]    (default all cases, N = 6 8 12)
+
+--step-factor scales the tutorial's step limits (maxCo, maxDeltaT): 0.5 runs
+at half the default step, to measure how far u_max depends on the step.
 """
 
 import argparse
+import re
 
 import numpy as np
 
@@ -33,10 +37,34 @@ def rms_velocity_deviation(case, history):
     return np.sqrt(np.mean((u - u_ref[inside])**2))/tenCate.CASES[case][2]
 
 
+# The table of the coupling before issue 28 (explicit projection, viscous
+# number at most 1), kept for comparison
+BEFORE = RESULTS / "tenCate_before_issue28.csv"
+
+
+def scale_step(case, factor):
+    """Scale maxCo and maxDeltaT in the copy's controlDict by factor."""
+    control = case.path / "system" / "controlDict"
+    text = control.read_text()
+    for key in ("maxCo", "maxDeltaT"):
+        text, found = re.subn(
+            rf"^({key}\s+)([^;]+);",
+            lambda m: f"{m.group(1)}{float(m.group(2))*factor:g};",
+            text, flags=re.M)
+        if found != 1:
+            raise SystemExit(f"{control}: no single '{key}' entry to scale")
+    control.write_text(text)
+
+
+HEADER = ["case", "cellsPerDiameter", "stepFactor", "u_max", "u_max_exp",
+          "relError", "rmsVelocityDeviation", "wallTime_s", "steps", "endTime_s"]
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--cases", default="E1,E2,E3,E4")
     parser.add_argument("--np", type=int, default=2)
+    parser.add_argument("--step-factor", type=float, default=1.0)
     parser.add_argument("resolutions", nargs="*", type=int, default=[6, 8, 12])
     args = parser.parse_args()
 
@@ -49,41 +77,59 @@ def main():
         resolutions (possibly by another instance of this script) stay."""
         if not table.exists():
             return []
-        return [line.split(",") for line in table.read_text().splitlines()[1:]]
+        lines = table.read_text().splitlines()
+        if lines[0].split(",") != HEADER:
+            raise SystemExit(f"{table}: header is not {','.join(HEADER)}")
+        return [line.split(",") for line in lines[1:]]
 
     rows = stored_rows()
     for case_name in args.cases.split(","):
         histories = {}
+        factor = args.step_factor
         for n in args.resolutions:
+            tag = "" if factor == 1 else f"_step{factor:g}"
             case = Case.copy(ROOT / "tutorials" / "tenCate",
-                             RUNS / f"tenCate_{case_name}_{n}", env)
+                             RUNS / f"tenCate_{case_name}_{n}{tag}", env)
+            if factor != 1:
+                scale_step(case, factor)
             seconds = timed_run(case, "./Allrun", case_name, n, args.np)
             h = case.history()["sphere"]
-            histories[f"{n} cells/d"] = h
+            histories[f"{n} cells/d{tag.replace('_', ', ')}"] = h
             u_max, error = tenCate.summary(case_name, h)
             rms = rms_velocity_deviation(case_name, h)
             rows = [r for r in stored_rows()
-                    if not (r[0] == case_name and int(r[1]) == n)]
-            rows.append([case_name, n, u_max, tenCate.CASES[case_name][2], error,
-                         rms, seconds, len(h), h[-1, 0]])
-            print(f"{case_name} N={n:3d} u_max={u_max:.5f} error={100*error:+.2f}% "
+                    if not (r[0] == case_name and int(r[1]) == n
+                            and float(r[2]) == factor)]
+            rows.append([case_name, n, factor, u_max, tenCate.CASES[case_name][2],
+                         error, rms, seconds, len(h), h[-1, 0]])
+            print(f"{case_name} N={n:3d} step x{factor:g} u_max={u_max:.5f} "
+                  f"error={100*error:+.2f}% "
                   f"rms={100*rms:.2f}% wall={seconds:.0f}s steps={len(h)} "
                   f"end={h[-1, 0]:.3f}s", flush=True)
-            write_table(table, ["case", "cellsPerDiameter", "u_max", "u_max_exp",
-                                "relError", "rmsVelocityDeviation", "wallTime_s",
-                                "steps", "endTime_s"], rows)
-        tenCate.plot(case_name, histories, RESULTS / f"tenCate_{case_name}.png")
+            write_table(table, HEADER, rows)
+        tenCate.plot(case_name, histories,
+                     RESULTS / f"tenCate_{case_name}{tag}.png")
 
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(6, 4))
+    fig, ax = plt.subplots(figsize=(7, 5))
+    colors = {c: f"C{i}" for i, c in enumerate(tenCate.CASES)}
+    before = {}
+    for r in (line.split(",") for line in BEFORE.read_text().splitlines()[1:]):
+        before.setdefault(f"{r[0]} before", []).append(
+            (float(r[6]), abs(float(r[4])), r[1]))
+    plot_speed_error(ax, before, fmt="x:",
+                     colors={f"{c} before": colors[c] for c in colors})
     series = {}
     for r in rows:
-        series.setdefault(r[0], []).append((float(r[6]), abs(float(r[4])), r[1]))
-    plot_speed_error(ax, series, target=3)
+        if float(r[2]) == 1:
+            series.setdefault(r[0], []).append((float(r[7]), abs(float(r[5])), r[1]))
+    plot_speed_error(ax, series, target=2, colors=colors)
     ax.set_ylabel("|u_max error| [%]")
-    ax.set_title("ten Cate: speed against error (labels: cells/d)")
+    ax.set_title("ten Cate: speed against error (labels: cells/d; dotted:\n"
+                 "the coupling before issue 28, 2 ranks, shared cores)", fontsize=9)
+    ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
     fig.savefig(RESULTS / "tenCate_speed_error.png", dpi=120)
 
