@@ -70,9 +70,18 @@ Foam::dlmParticle::dlmParticle(const dictionary& dict)
     contactForce_(dict.getOrDefault<vector>("contactForce", Zero)),
     contactTorque_(dict.getOrDefault<vector>("contactTorque", Zero)),
     coupledMassRatio_(1),
-    coupledInertiaRatio_(1)
+    coupledInertiaRatio_(1),
+    steadyFreeSpin_(false)
 {
     checkKeywords(dict);
+
+    const symmTensor I(shape_->inertiaPerUnitDensity());
+    steadyFreeSpin_ =
+        shape_->nDimensions() == 2
+     || (
+            I.xy() == 0 && I.xz() == 0 && I.yz() == 0
+         && I.xx() == I.yy() && I.yy() == I.zz()
+        );
 
     if (density_ <= 0)
     {
@@ -137,7 +146,8 @@ Foam::dlmParticle::dlmParticle(const dlmParticle& p)
     contactForce_(p.contactForce_),
     contactTorque_(p.contactTorque_),
     coupledMassRatio_(p.coupledMassRatio_),
-    coupledInertiaRatio_(p.coupledInertiaRatio_)
+    coupledInertiaRatio_(p.coupledInertiaRatio_),
+    steadyFreeSpin_(p.steadyFreeSpin_)
 {}
 
 
@@ -166,17 +176,79 @@ void Foam::dlmParticle::move(const scalar deltaT)
 
     position_ += 0.5*deltaT*(velocity_ + velocity0_);
 
-    const scalar angle = mag(angularVelocity_)*deltaT;
-    if (angle > VSMALL)
-    {
-        orientation_ =
-            quaternion(angularVelocity_/mag(angularVelocity_), angle)
-           *orientation_;
-        orientation_.normalize();
-    }
+    rotateFree(orientation_, angularVelocity_, deltaT);
 
     velocity0_ = velocity_;
     angularVelocity0_ = angularVelocity_;
+}
+
+
+void Foam::dlmParticle::rotateFree
+(
+    quaternion& q,
+    vector& omega,
+    const scalar deltaT
+) const
+{
+    if (steadyFreeSpin_)
+    {
+        const scalar angle = mag(omega)*deltaT;
+        if (angle > VSMALL)
+        {
+            q = quaternion(omega/mag(omega), angle)*q;
+            q.normalize();
+        }
+        return;
+    }
+
+    // Body frame: pi0 the angular momentum (per unit density) at the start,
+    // w the rotation rate of the step, pi1 = Q^T pi0 at the end, where Q
+    // turns by w deltaT. The implicit midpoint rule takes w = I^-1 (pi0 +
+    // pi1)/2, found by fixed-point iteration (its contraction is about the
+    // step's rotation angle times the inertia's anisotropy). Any rotation
+    // about w keeps pi.w, so the energy pi.I^-1 pi/2 stays exactly when w
+    // is that midpoint rate; composing Q on the orientation keeps R pi, the
+    // angular momentum, exactly.
+    const symmTensor& I = shape_->inertiaPerUnitDensity();
+    const symmTensor invI(inv(I));
+    const vector pi0(I & (q.R().T() & omega));
+
+    auto turn = [deltaT](const vector& w)
+    {
+        const scalar angle = mag(w)*deltaT;
+        return
+            angle > VSMALL ? quaternion(w/mag(w), angle) : quaternion::I;
+    };
+
+    vector w(invI & pi0);
+    vector pi1(pi0);
+    const label maxIter = 100;
+    label iter = 0;
+    for (; iter < maxIter; ++iter)
+    {
+        pi1 = turn(w).R().T() & pi0;
+        const vector wNew(invI & (0.5*(pi0 + pi1)));
+        const scalar change = mag(wNew - w);
+        w = wNew;
+        if (change <= 1e-15*mag(w))
+        {
+            break;
+        }
+    }
+    if (iter == maxIter)
+    {
+        FatalErrorInFunction
+            << "Particle " << name_ << " turns by " << mag(w)*deltaT
+            << " rad in a step of " << deltaT << " s: too far for its"
+            << " torque-free rotation to converge. Reduce the time step."
+            << exit(FatalError);
+    }
+
+    const quaternion Q(turn(w));
+    pi1 = Q.R().T() & pi0;
+    q = q*Q;
+    q.normalize();
+    omega = q.R() & (invI & pi1);
 }
 
 

@@ -1027,13 +1027,24 @@ void Foam::particleContact::evolve
             if (moving_[i])
             {
                 position_[i] += h*halfVelocity[i];
-                const scalar angle = mag(halfOmega[i])*h;
-                if (angle > VSMALL)
+                // The drift turns free of torque: a body whose inertia is
+                // not isotropic changes its angular velocity as it turns
+                const dlmParticle& p = particles[i];
+                p.rotateFree(orientation_[i], halfOmega[i], h);
+                if (!p.steadyFreeSpin() && inverseMass_[i] > 0)
                 {
-                    orientation_[i] =
-                        quaternion(halfOmega[i]/mag(halfOmega[i]), angle)
-                       *orientation_[i];
-                    orientation_[i].normalize();
+                    omega_[i] =
+                        halfOmega[i]
+                      + 0.5*h
+                       *(
+                            angularAccel[i]
+                          + angularAcceleration
+                            (
+                                i,
+                                orientation_[i],
+                                torque_[i]
+                            )
+                        );
                 }
             }
             // The forces of the next evaluation add up from zero
