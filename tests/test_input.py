@@ -156,11 +156,6 @@ BAD_INPUT = [
                   " position (0.015 0.015 0.025); }", "contact { " + PAIRS + " }"),
         "Particle egg has shape ellipsoid", "round shapes (sphere, disk) only",
         "'active false'", "particleProperties.contact"),
-    bad("ellipsoid without contacts",
-        particles("egg { shape ellipsoid; semiAxes (0.005 0.004 0.003); density 2000;"
-                  " position (0.015 0.015 0.025); }"),
-        "Particle egg has shape ellipsoid", "not yet available to the solver",
-        "particleProperties"),
     bad("sphere on a 2D mesh", particles("ball { shape sphere; radius 0.01; density 2500; position (0.1 0.3 0); }"),
         "Particle ball", "3D but the mesh is 2D", source="fallingDisk"),
     bad("disk on a 3D mesh", particles("coin { " + GOOD.replace("sphere;", "disk;") + " }"),

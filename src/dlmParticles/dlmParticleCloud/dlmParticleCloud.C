@@ -220,37 +220,24 @@ void Foam::dlmParticleCloud::checkParticles()
                 << " shape such as sphere." << exit(FatalError);
         }
 
-        // Until contacts and output know other shapes, a particle that is
-        // not round would be taken as the sphere (disk) of its bounding
-        // radius: in contact with walls and particles (depth, normal,
-        // contact point, lubrication) and when drawn from the VTK file
-        if (!p.shape().round())
+        // Until contacts know other shapes, a particle that is not round
+        // would be taken as the sphere (disk) of its bounding radius in
+        // contact with walls and particles (depth, normal, contact point,
+        // lubrication)
+        if
+        (
+            !p.shape().round()
+         && properties_.found("contact")
+         && properties_.subDict("contact").getOrDefault<bool>("active", true)
+        )
         {
-            if
-            (
-                properties_.found("contact")
-             && properties_.subDict("contact").getOrDefault<bool>
-                (
-                    "active",
-                    true
-                )
-            )
-            {
-                FatalIOErrorInFunction(properties_.subDict("contact"))
-                    << "Particle " << p.name() << " has shape "
-                    << p.shape().type() << ", but contacts (walls, overlaps,"
-                    << " lubrication) are implemented for round shapes"
-                    << " (sphere, disk) only: they would take it as the"
-                    << " sphere of its bounding radius. Use 'active false'"
-                    << " in the contact settings." << exit(FatalIOError);
-            }
-            FatalIOErrorInFunction(properties_)
+            FatalIOErrorInFunction(properties_.subDict("contact"))
                 << "Particle " << p.name() << " has shape "
-                << p.shape().type() << ", but the particle output"
-                << " (VTK/particles, a point with a 'diameter' for a sphere"
-                << " glyph) draws round shapes (sphere, disk) only: it would"
-                << " show the sphere of its bounding radius. Non-round shapes"
-                << " are not yet available to the solver." << exit(FatalIOError);
+                << p.shape().type() << ", but contacts (walls, overlaps,"
+                << " lubrication) are implemented for round shapes"
+                << " (sphere, disk) only: they would take it as the"
+                << " sphere of its bounding radius. Use 'active false'"
+                << " in the contact settings." << exit(FatalIOError);
         }
 
         label celli = findCell(p.position());
@@ -894,16 +881,8 @@ void Foam::dlmParticleCloud::updateFields()
 }
 
 
-void Foam::dlmParticleCloud::writeVTK() const
+void Foam::dlmParticleCloud::writeVTKPoints(const fileName& dir) const
 {
-    if (!Pstream::master())
-    {
-        return;
-    }
-
-    const fileName dir(mesh_.time().globalPath()/"VTK"/"particles");
-    mkDir(dir);
-
     const word timeName(mesh_.time().timeName());
     {
         OFstream os(dir/"particles_" + timeName + ".vtk");
@@ -977,16 +956,28 @@ void Foam::dlmParticleCloud::writeVTK() const
                 << q.v().z() << nl;
         }
     }
+}
 
-    // ParaView time series of every particles_<time>.vtk present
+
+void Foam::dlmParticleCloud::writeVTKSeries
+(
+    const fileName& dir,
+    const word& prefix,
+    const word& seriesName
+)
+{
+    // Every <prefix><time>.vtk present
     const fileNameList files(readDir(dir, fileName::FILE));
     List<Tuple2<scalar, word>> series;
     for (const fileName& f : files)
     {
         const word name(f.name());
-        if (name.startsWith("particles_") && f.hasExt("vtk"))
+        if (name.startsWith(prefix) && f.hasExt("vtk"))
         {
-            const word t(name.substr(10, name.size() - 14));
+            const word t
+            (
+                name.substr(prefix.size(), name.size() - prefix.size() - 4)
+            );
             scalar value;
             if (readScalar(t, value))
             {
@@ -996,7 +987,7 @@ void Foam::dlmParticleCloud::writeVTK() const
     }
     Foam::sort(series);
 
-    OFstream os(dir/"particles.vtk.series");
+    OFstream os(dir/seriesName);
     os.precision(10);
     os  << "{" << nl
         << "  \"file-series-version\" : \"1.0\"," << nl
@@ -1009,6 +1000,123 @@ void Foam::dlmParticleCloud::writeVTK() const
     }
     os  << "  ]" << nl
         << "}" << nl;
+}
+
+
+void Foam::dlmParticleCloud::writeVTKSurfaces(const fileName& dir) const
+{
+    const word timeName(mesh_.time().timeName());
+    OFstream os(dir/"surfaces_" + timeName + ".vtk");
+    os.precision(10);
+
+    // Each particle's drawing, placed and turned
+    List<pointField> points(nParticles_);
+    List<faceList> faces(nParticles_);
+    label nPoints = 0;
+    label nFaces = 0;
+    label nEntries = 0;
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        const dlmParticle& p = particles_[i];
+        p.shape().drawing(points[i], faces[i]);
+        points[i] = p.position() + (p.R() & points[i]);
+        nPoints += points[i].size();
+        nFaces += faces[i].size();
+        for (const face& f : faces[i])
+        {
+            nEntries += f.size() + 1;
+        }
+    }
+
+    os  << "# vtk DataFile Version 3.0" << nl
+        << "pimpleDLMFoam particle surfaces, time " << timeName << nl
+        << "ASCII" << nl
+        << "DATASET POLYDATA" << nl
+        << "POINTS " << nPoints << " double" << nl;
+    for (const pointField& pts : points)
+    {
+        for (const point& x : pts)
+        {
+            os  << x.x() << ' ' << x.y() << ' ' << x.z() << nl;
+        }
+    }
+    os  << "POLYGONS " << nFaces << ' ' << nEntries << nl;
+    label offset = 0;
+    forAll(faces, i)
+    {
+        for (const face& f : faces[i])
+        {
+            os  << f.size();
+            for (const label pointi : f)
+            {
+                os  << ' ' << offset + pointi;
+            }
+            os  << nl;
+        }
+        offset += points[i].size();
+    }
+
+    // Per face: the particle's id, density and the velocity of the rigid
+    // motion at the face's centre
+    os  << "CELL_DATA " << nFaces << nl
+        << "SCALARS id int 1" << nl
+        << "LOOKUP_TABLE default" << nl;
+    forAll(faces, i)
+    {
+        for (label k = 0; k < faces[i].size(); ++k)
+        {
+            os  << i << nl;
+        }
+    }
+    os  << "SCALARS density double 1" << nl
+        << "LOOKUP_TABLE default" << nl;
+    forAll(faces, i)
+    {
+        for (label k = 0; k < faces[i].size(); ++k)
+        {
+            os  << particles_[i].density() << nl;
+        }
+    }
+    os  << "VECTORS velocity double" << nl;
+    forAll(faces, i)
+    {
+        const dlmParticle& p = particles_[i];
+        for (const face& f : faces[i])
+        {
+            const vector v
+            (
+                p.velocity()
+              + (p.angularVelocity() ^ (f.centre(points[i]) - p.position()))
+            );
+            os  << v.x() << ' ' << v.y() << ' ' << v.z() << nl;
+        }
+    }
+}
+
+
+void Foam::dlmParticleCloud::writeVTK() const
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    const fileName dir(mesh_.time().globalPath()/"VTK"/"particles");
+    mkDir(dir);
+
+    writeVTKPoints(dir);
+    writeVTKSeries(dir, "particles_", "particles.vtk.series");
+
+    bool allRound = true;
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        allRound = allRound && particles_[i].shape().round();
+    }
+    if (!allRound)
+    {
+        writeVTKSurfaces(dir);
+        writeVTKSeries(dir, "surfaces_", "surfaces.vtk.series");
+    }
 }
 
 
@@ -1397,12 +1505,14 @@ void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
             historyFile_ = newRecord("particles", "particles.dat");
             historyFile_()
                 << "# time particle x y z Ux Uy Uz omegax omegay omegaz"
-                << " Fx Fy Fz Tx Ty Tz Fcx Fcy Fcz Tcx Tcy Tcz" << nl
+                << " Fx Fy Fz Tx Ty Tz Fcx Fcy Fcz Tcx Tcy Tcz qw qx qy qz"
+                << nl
                 << "# F, T: hydrodynamic force and torque (about the"
                 << " centroid)" << (twoD() ? " on the mesh's depth" : "")
                 << nl
                 << "# Fc, Tc: mean contact force and torque of the step"
-                << (twoD() ? " per unit depth" : "") << endl;
+                << (twoD() ? " per unit depth" : "") << nl
+                << "# q: orientation quaternion (body to global)" << endl;
         }
 
         OFstream& os = historyFile_();
@@ -1419,7 +1529,9 @@ void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
             {
                 os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
             }
-            os  << nl;
+            const quaternion& q = p.orientation();
+            os  << ' ' << q.w() << ' ' << q.v().x() << ' ' << q.v().y()
+                << ' ' << q.v().z() << nl;
         }
         os.flush();
     }

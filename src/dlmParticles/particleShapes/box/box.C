@@ -193,6 +193,31 @@ Foam::scalar Foam::particleShapes::box::planeOverlap
 }
 
 
+void Foam::particleShapes::box::drawing
+(
+    pointField& points,
+    faceList& faces
+) const
+{
+    // Corner i has the sign pattern of i's bits (x: 1, y: 2, z: 4)
+    points.setSize(8);
+    forAll(points, i)
+    {
+        points[i] = cmptMultiply
+        (
+            halfExtents_,
+            vector(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)
+        );
+    }
+    faces = faceList
+    ({
+        face{0, 4, 6, 2}, face{1, 3, 7, 5},     // -x, +x
+        face{0, 1, 5, 4}, face{2, 6, 7, 3},     // -y, +y
+        face{0, 2, 3, 1}, face{4, 5, 7, 6}      // -z, +z
+    });
+}
+
+
 void Foam::particleShapes::box::write(Ostream& os) const
 {
     os.writeEntry("shape", typeName);

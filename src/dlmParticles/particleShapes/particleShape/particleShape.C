@@ -6,6 +6,8 @@
 
 #include "particleShape.H"
 #include "cutCellFraction.H"
+#include "edgeHashes.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -183,6 +185,106 @@ bool Foam::particleShape::pairOverlap
 ) const
 {
     return false;
+}
+
+
+void Foam::particleShape::drawing(pointField& points, faceList& faces) const
+{
+    DynamicList<point> directions;
+    DynamicList<face> polygons;
+
+    if (nDimensions() == 2)
+    {
+        const label n = 64;
+        face polygon(n);
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar angle = constant::mathematical::twoPi*i/n;
+            directions.append(vector(cos(angle), sin(angle), 0));
+            polygon[i] = i;
+        }
+        polygons.append(polygon);
+    }
+    else
+    {
+        // Icosahedron, each triangle split in four three times
+        const scalar g = 0.5*(1 + sqrt(5.0));
+        for (const scalar a : {-1.0, 1.0})
+        {
+            for (const scalar b : {-g, g})
+            {
+                directions.append(vector(0, a, b));
+                directions.append(vector(a, b, 0));
+                directions.append(vector(b, 0, a));
+            }
+        }
+        // Faces: the triangles of mutually nearest vertices, outward
+        const scalar edge2 = 4;
+        forAll(directions, i)
+        {
+            for (label j = i + 1; j < directions.size(); ++j)
+            {
+                for (label k = j + 1; k < directions.size(); ++k)
+                {
+                    const point& a = directions[i];
+                    const point& b = directions[j];
+                    const point& c = directions[k];
+                    if
+                    (
+                        mag(magSqr(a - b) - edge2) < 1e-9
+                     && mag(magSqr(b - c) - edge2) < 1e-9
+                     && mag(magSqr(c - a) - edge2) < 1e-9
+                    )
+                    {
+                        const bool outward = (((b - a) ^ (c - a)) & a) > 0;
+                        polygons.append
+                        (
+                            outward ? face{i, j, k} : face{i, k, j}
+                        );
+                    }
+                }
+            }
+        }
+        for (label level = 0; level < 3; ++level)
+        {
+            EdgeMap<label> midPoints;
+            auto midPoint = [&](const label a, const label b)
+            {
+                const edge e(a, b);
+                const auto iter = midPoints.cfind(e);
+                if (iter.found())
+                {
+                    return *iter;
+                }
+                directions.append(0.5*(directions[a] + directions[b]));
+                midPoints.insert(e, directions.size() - 1);
+                return directions.size() - 1;
+            };
+            DynamicList<face> split(4*polygons.size());
+            for (const face& f : polygons)
+            {
+                const label ab = midPoint(f[0], f[1]);
+                const label bc = midPoint(f[1], f[2]);
+                const label ca = midPoint(f[2], f[0]);
+                split.append(face{f[0], ab, ca});
+                split.append(face{ab, f[1], bc});
+                split.append(face{ca, bc, f[2]});
+                split.append(face{ab, bc, ca});
+            }
+            polygons.transfer(split);
+        }
+    }
+
+    // Onto the surface along each direction, from just outside
+    const scalar reach = 1.01*boundingRadius();
+    points.setSize(directions.size());
+    forAll(directions, i)
+    {
+        const vector e(directions[i]/mag(directions[i]));
+        const point r0(reach*e);
+        points[i] = r0 - surfaceCrossing(r0, -e, reach)*e;
+    }
+    faces.transfer(polygons);
 }
 
 

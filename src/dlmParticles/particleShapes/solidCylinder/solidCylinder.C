@@ -153,6 +153,35 @@ Foam::scalar Foam::particleShapes::solidCylinder::surfaceCrossing
 }
 
 
+void Foam::particleShapes::solidCylinder::drawing
+(
+    pointField& points,
+    faceList& faces
+) const
+{
+    // Points 0..n-1 round the lower end, n..2n-1 round the upper end
+    const label n = 48;
+    points.setSize(2*n);
+    faces.setSize(n + 2);
+    face lower(n);
+    face upper(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar angle = constant::mathematical::twoPi*i/n;
+        const scalar x = radius_*cos(angle);
+        const scalar y = radius_*sin(angle);
+        points[i] = point(x, y, -0.5*length_);
+        points[n + i] = point(x, y, 0.5*length_);
+        lower[i] = n - 1 - i;
+        upper[i] = n + i;
+        const label next = (i + 1) % n;
+        faces[i] = face{i, next, n + next, n + i};
+    }
+    faces[n] = lower;
+    faces[n + 1] = upper;
+}
+
+
 void Foam::particleShapes::solidCylinder::write(Ostream& os) const
 {
     os.writeEntry("shape", typeName);
