@@ -538,3 +538,29 @@ def test_adaptive_step_holds_the_courant_number_through_a_bounce(tmp_path, foam_
     courant = [float(line.split()[5]) for line in log.splitlines()
                if line.startswith("Courant Number mean")]
     assert max(courant) < 0.53
+
+
+def test_rolling_resistance_slows_a_rolling_sphere_at_five_sevenths_mu_r_g(
+        tmp_path, foam_env):
+    """A sphere rolling on the floor at 0.1 m/s with rolling friction
+    mu_r = 0.05 (a torque mu_r R Fn against its spin) slows down at
+    5/7 mu_r g (rolling without slipping: the contact's friction turns the
+    torque into the deceleration of the sphere and its spin), to 2 %, and
+    then rests without rocking."""
+    mu_r = 0.05
+    case = lone_sphere(tmp_path, foam_env, "rolling", "(-0.008 0 0.002)", "(0.1 0 0)", {
+        ("constant/g", "value"): "(0 0 -9.81)",
+        ("constant/particleProperties", "particles/left/angularVelocity"): "(0 50 0)",
+        ("constant/particleProperties", f"{PAIRS}/particleWall/rollingFriction"): mu_r,
+        ("system/controlDict", "endTime"): 0.4,
+        ("system/controlDict", "writeInterval"): 100000,
+    })
+    case.run("dlmDEMFoam")
+    h = case.history()["left"]
+    t, ux = h[:, 0], h[:, 4]
+    rolling = (t > 0.05) & (t < 0.2)
+    slope = np.polyfit(t[rolling], ux[rolling], 1)[0]
+    assert slope == pytest.approx(-5/7*mu_r*9.81, rel=0.02)
+    rest = t > 0.35
+    assert np.abs(h[rest, 4:10]).max() < 1e-6
+    assert np.ptp(h[rest, 1]) < 1e-9

@@ -151,11 +151,13 @@ BAD_INPUT = [
     bad("orientation zero", particles("sphere { " + GOOD + " orientation (0 (0 0 0)); }"),
         "orientation (0 (0 0 0)) of particle sphere is the zero quaternion", "(1 (0 0 0))",
         "particleProperties.particles.sphere"),
-    bad("ellipsoid with contacts",
+    bad("two ellipsoids with contacts",
         particles("egg { shape ellipsoid; semiAxes (0.005 0.004 0.003); density 2000;"
-                  " position (0.015 0.015 0.025); }", "contact { " + PAIRS + " }"),
-        "Particle egg has shape ellipsoid", "round shapes (sphere, disk) only",
-        "'active false'", "particleProperties.contact"),
+                  " position (0.015 0.015 0.025); }"
+                  " egg2 { shape ellipsoid; semiAxes (0.005 0.004 0.003); density 2000;"
+                  " position (0.015 0.015 0.04); }", "contact { " + BOTH_PAIRS + " }"),
+        "Particle egg has shape ellipsoid", "between particles only for round shapes",
+        "2 particles", "'active false'", "particleProperties.contact"),
     bad("sphere on a 2D mesh", particles("ball { shape sphere; radius 0.01; density 2500; position (0.1 0.3 0); }"),
         "Particle ball", "3D but the mesh is 2D", source="fallingDisk"),
     bad("disk on a 3D mesh", particles("coin { " + GOOD.replace("sphere;", "disk;") + " }"),
@@ -176,10 +178,10 @@ BAD_INPUT = [
         "contact.maxStartOverlap 0.05", "particleProperties"),
     bad("sphere centred on the floor, with contacts",
         particles("a { " + GOOD.replace("0.025)", "0)") + " }", "contact { " + PAIRS + " }"),
-        "Particle a", "overlaps wall meshWalls by 0.005 (50 % of its diameter)", "maxStartOverlap 0.05"),
+        "Particle a", "overlaps wall meshWalls by 0.005 (50 % of its thickness)", "maxStartOverlap 0.05"),
     bad("sphere in the floor, with contacts",
         particles("a { " + GOOD.replace("0.025)", "0.003)") + " }", "contact { " + PAIRS + " }"),
-        "Particle a", "overlaps wall meshWalls by 0.002 (20 % of its diameter)", "maxStartOverlap 0.05"),
+        "Particle a", "overlaps wall meshWalls by 0.002 (20 % of its thickness)", "maxStartOverlap 0.05"),
     bad("sphere beyond a contact-only wall",
         particles("a { " + GOOD.replace("0.025)", "0.035)") + " }", "contact { " + PAIRS
                   + " walls { lid { type plane; point (0 0 0.03); normal (0 0 -1); } } }"),

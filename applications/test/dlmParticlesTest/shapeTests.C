@@ -364,6 +364,94 @@ TEST_CASE("plane overlaps of the ellipsoid and the box", "[geometry]")
 }
 
 
+TEST_CASE("plane cuts and support functions against sums over a fine grid", "[geometry]")
+{
+    // Midpoint sums over a grid of n^3 points on the bounding box: the cut
+    // volume and centroid, the section area from the exact volume's change
+    // over a small move of the plane, and the support as the farthest point
+    const std::string shapes[] =
+    {
+        "shape ellipsoid; semiAxes (1 0.6 0.3);",
+        "shape box; halfExtents (0.5 0.3 0.2);",
+        "shape cylinder; radius 0.4; length 0.6;"
+    };
+    const vector normals[] =
+    {
+        vector(0, 0, 1), vector(1, 2, 2)/3, vector(0.2, -0.5, 0.8),
+        vector(0.6, -0.8, 0), vector(0.1, 0.2, -0.9)
+    };
+    const label n = 160;
+    for (const std::string& entries : shapes)
+    {
+        autoPtr<particleShape> shape(makeShape(entries));
+        const scalar Rb = shape->boundingRadius();
+        const scalar h = 2*Rb/n;
+        DynamicList<point> inside;
+        for (label i = 0; i < n; ++i)
+        {
+            for (label j = 0; j < n; ++j)
+            {
+                for (label k = 0; k < n; ++k)
+                {
+                    const point r(h*vector(i + 0.5, j + 0.5, k + 0.5) - Rb*vector::one);
+                    vector normal;
+                    if (shape->signedDistance(r, normal) < 0)
+                    {
+                        inside.append(r);
+                    }
+                }
+            }
+        }
+        const scalar cellVolume = pow3(h);
+        for (const vector& nRaw : normals)
+        {
+            const vector nu(nRaw/mag(nRaw));
+            const scalar reach = shape->support(nu);
+            scalar farthest = -GREAT;
+            for (const point& r : inside)
+            {
+                farthest = max(farthest, r & nu);
+            }
+            INFO(entries << " normal " << show(nu));
+            CHECK(reach >= farthest);
+            CHECK(reach - farthest < 2*h);
+
+            for (const scalar fraction : {0.3, 0.8})
+            {
+                const scalar d = reach*(1 - fraction);
+                scalar V, area;
+                vector centroid;
+                REQUIRE(shape->planeCut(nu, d, V, centroid, area));
+                CHECK(V == Approx(shape->planeOverlap(nu, d)).epsilon(1e-12));
+
+                scalar sumV = 0;
+                vector sumC(Zero);
+                for (const point& r : inside)
+                {
+                    if ((r & nu) > d)
+                    {
+                        sumV += cellVolume;
+                        sumC += cellVolume*r;
+                    }
+                }
+                INFO("distance " << d << ": volume " << V << " (grid "
+                    << sumV << "), section " << area);
+                // The grid's error: up to half a spacing of the section
+                // (the plane between two layers of points)
+                CHECK(mag(V - sumV) < 0.5*h*area + 0.01*V);
+                CHECK(mag(centroid - sumC/sumV) < h);
+
+                const scalar dd = 1e-6*reach;
+                const scalar slope =
+                    (shape->planeOverlap(nu, d - dd)
+                   - shape->planeOverlap(nu, d + dd))/(2*dd);
+                CHECK(area == Approx(slope).epsilon(1e-5));
+            }
+        }
+    }
+}
+
+
 TEST_CASE("non-spherical fractions integrate to the volume", "[geometry]")
 {
     // Cubic cells of 8 and 16 per smallest dimension, fractions subdivided

@@ -220,10 +220,10 @@ void Foam::dlmParticleCloud::checkParticles()
                 << " shape such as sphere." << exit(FatalError);
         }
 
-        // Until contacts know other shapes, a particle that is not round
-        // would be taken as the sphere (disk) of its bounding radius in
-        // contact with walls and particles (depth, normal, contact point,
-        // lubrication)
+        // Contacts of a shape that is not round: with walls, from the
+        // part of the shape beyond a wall's tangent plane (planeCut);
+        // between particles not yet (the overlap methods take each
+        // particle as the sphere of its bounding radius)
         if
         (
             !p.shape().round()
@@ -231,13 +231,28 @@ void Foam::dlmParticleCloud::checkParticles()
          && properties_.subDict("contact").getOrDefault<bool>("active", true)
         )
         {
-            FatalIOErrorInFunction(properties_.subDict("contact"))
-                << "Particle " << p.name() << " has shape "
-                << p.shape().type() << ", but contacts (walls, overlaps,"
-                << " lubrication) are implemented for round shapes"
-                << " (sphere, disk) only: they would take it as the"
-                << " sphere of its bounding radius. Use 'active false'"
-                << " in the contact settings." << exit(FatalIOError);
+            scalar V, area;
+            vector centroid;
+            if (!p.shape().planeCut(vector(0, 0, 1), 0, V, centroid, area))
+            {
+                FatalIOErrorInFunction(properties_.subDict("contact"))
+                    << "Particle " << p.name() << " has shape "
+                    << p.shape().type() << ", whose contacts with walls are"
+                    << " not implemented (no formula for its part beyond a"
+                    << " plane). Use 'active false' in the contact settings,"
+                    << " or an ellipsoid or box." << exit(FatalIOError);
+            }
+            if (particles_.size() > 1)
+            {
+                FatalIOErrorInFunction(properties_.subDict("contact"))
+                    << "Particle " << p.name() << " has shape "
+                    << p.shape().type() << ": its contacts with walls are"
+                    << " implemented, but contacts between particles only"
+                    << " for round shapes (sphere, disk), and this scene has "
+                    << particles_.size() << " particles. Use 'active false'"
+                    << " in the contact settings for a scene whose particles"
+                    << " do not touch." << exit(FatalIOError);
+            }
         }
 
         label celli = findCell(p.position());

@@ -501,7 +501,9 @@ void Foam::particleContact::applyContact
     const scalar depth,
     const point& location,
     const vector& normal,
-    const scalar h
+    const scalar h,
+    const scalar curvatureRadius,
+    const scalar volumeExponent
 )
 {
     const scalar Ri = radius_[i];
@@ -509,7 +511,7 @@ void Foam::particleContact::applyContact
     const vector ri(location - position_[i]);
     vector relative(-(velocity_[i] + (omega_[i] ^ ri)));
     scalar invMass = inverseMass(i);
-    scalar radius = Ri;
+    scalar radius = curvatureRadius > 0 ? curvatureRadius : Ri;
     scalar smallerRadius = Ri;
     vector rj(Zero);
     if (j >= 0)
@@ -528,7 +530,8 @@ void Foam::particleContact::applyContact
     scalar stiffness, damping;
     const scalar Fn = law.normalForce
     (
-        V, depth, radius, mass, -(relative & normal), stiffness, damping
+        V, depth, radius, mass, -(relative & normal), stiffness, damping,
+        volumeExponent
     );
     const vector sliding(-(relative - (relative & normal)*normal));
     const vector Ft
@@ -543,6 +546,15 @@ void Foam::particleContact::applyContact
     {
         force_[j] -= F;
         torque_[j] -= rj ^ F;
+    }
+    if (law.rollingFriction() > 0 && Fn > 0)
+    {
+        const vector M(rollingTorque(i, j, law.rollingFriction()*radius*Fn, h));
+        torque_[i] += M;
+        if (j >= 0)
+        {
+            torque_[j] -= M;
+        }
     }
 
     // A contact that began within this sub-step, a fraction s of it ago:
@@ -586,6 +598,80 @@ void Foam::particleContact::applyContact
         );
     }
     ++nActive_;
+}
+
+
+Foam::vector Foam::particleContact::rollingTorque
+(
+    const label i,
+    const label j,
+    const scalar limit,
+    const scalar h
+) const
+{
+    // Against the relative spin, at most what stops it within the sub-step
+    // (the step's first evaluation, h = 0, opens a sub-step like the last)
+    const vector spin(omega_[i] - (j >= 0 ? omega_[j] : vector::zero));
+    const scalar magSpin = mag(spin);
+    if (magSpin < VSMALL)
+    {
+        return Zero;
+    }
+    const vector axis(spin/magSpin);
+    const scalar step = h > 0 ? h : correctionStep_;
+    if (step <= 0)
+    {
+        return -limit*axis;
+    }
+    vector response(angularAcceleration(i, orientation_[i], axis));
+    if (j >= 0)
+    {
+        response += angularAcceleration(j, orientation_[j], axis);
+    }
+    const scalar stopping = magSpin/(step*max(axis & response, VSMALL));
+    return -min(limit, stopping)*axis;
+}
+
+
+template<class SpringOf>
+void Foam::particleContact::applyShapeWallContact
+(
+    const label i,
+    const contactLaw& law,
+    const SpringOf& spring,
+    const wallContact& c,
+    const scalar h
+)
+{
+    const dlmParticle& p = cloud_.particles()[i];
+    const tensor R(orientation_[i].R());
+    // Body frame: the unit normal from the centroid towards the wall
+    const vector n(R.T() & -c.normal);
+    const scalar depth = p.shape().support(n) - c.distance;
+    if (depth <= 0)
+    {
+        return;
+    }
+    scalar V, area;
+    vector centroid;
+    p.shape().planeCut(n, c.distance, V, centroid, area);
+    if (V <= 0 || area <= 0)
+    {
+        return;
+    }
+
+    // The force acts at the overlap's centroid; its stiffness is the law's
+    // for the section's area (dV/ddelta), as for the round shapes' lens of
+    // curvature radius area^2/(4 pi V), and its damping gives the
+    // restitution for the exponent with which the overlap grows (1 on a
+    // face, 2 on a smooth point, 3 on a corner)
+    applyContact
+    (
+        i, -1, law, spring(c), V, depth,
+        position_[i] + (R & centroid), -c.normal, h,
+        sqr(area)/(4*pi*V),
+        min(max(area*depth/V, scalar(1)), scalar(3))
+    );
 }
 
 
@@ -702,8 +788,21 @@ void Foam::particleContact::evaluate(const scalar h)
             found
         );
         const tensor RT(orientation_[i].R().T());
+        const contactLaw& law = laws_[wallCandidates_[k][2]];
+        // The tangential spring of a contact that touches (created then)
+        auto spring = [&](const wallContact& c)
+        {
+            return
+                law.tangential() == contactLaw::tangentialType::spring
+              ? &wallSpring(contactKey({i, -1 - w, c.feature})) : nullptr;
+        };
         for (const wallContact& c : found)
         {
+            if (!shape.round())
+            {
+                applyShapeWallContact(i, law, spring, c, h);
+                continue;
+            }
             if (lubricationViscosity_ > 0 && walls_[w].lubricated())
             {
                 applyLubrication(i, -1, c.distance - R, c.location, -c.normal);
@@ -715,12 +814,9 @@ void Foam::particleContact::evaluate(const scalar h)
             const scalar V = shape.planeOverlap(RT & -c.normal, c.distance);
             if (V > 0)
             {
-                const contactLaw& law = laws_[wallCandidates_[k][2]];
                 applyContact
                 (
-                    i, -1, law,
-                    law.tangential() == contactLaw::tangentialType::spring
-                  ? &wallSpring(contactKey({i, -1 - w, c.feature})) : nullptr,
+                    i, -1, law, spring(c),
                     V, R - c.distance, c.location, -c.normal, h
                 );
             }
@@ -1129,22 +1225,28 @@ void Foam::particleContact::checkWalls() const
             wall.contacts(X, R, features, found);
             for (const wallContact& c : found)
             {
-                const scalar depth = R - c.distance;
-                if (c.distance < 0 || depth > maxStartOverlap_*2*R)
+                // The depth, and the thickness across the wall (the
+                // diameter of a round shape)
+                const vector n(p.R().T() & -c.normal);
+                const scalar depth = p.shape().support(n) - c.distance;
+                const scalar thickness =
+                    p.shape().support(n) + p.shape().support(-n);
+                if (c.distance < 0 || depth > maxStartOverlap_*thickness)
                 {
                     FatalIOErrorInFunction(dict_)
                         << "Particle " << p.name() << " at " << X
-                        << " (diameter " << 2*R << ") "
+                        << " (thickness " << thickness << " across the wall) "
                         << (
                                c.distance < 0
                              ? "has its centre beyond wall "
                              : "overlaps wall "
                            )
                         << wall.name() << " by " << depth << " ("
-                        << 50*depth/R << " % of its diameter) at the start,"
+                        << 100*depth/thickness << " % of its thickness) at"
+                        << " the start,"
                         << " more than the contact laws resolve"
                         << " (maxStartOverlap " << maxStartOverlap_
-                        << " of the diameter). Move the particle clear of"
+                        << " of the thickness). Move the particle clear of"
                         << " the wall" << exit(FatalIOError);
                 }
             }

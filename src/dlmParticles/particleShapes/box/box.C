@@ -6,6 +6,8 @@
 
 #include "box.H"
 #include "cutCellFraction.H"
+#include "Tuple2.H"
+#include "DynamicList.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -215,6 +217,135 @@ void Foam::particleShapes::box::drawing
         face{0, 1, 5, 4}, face{2, 6, 7, 3},     // -y, +y
         face{0, 2, 3, 1}, face{4, 5, 7, 6}      // -z, +z
     });
+}
+
+
+Foam::scalar Foam::particleShapes::box::support(const vector& u) const
+{
+    return cmptSum(cmptMultiply(halfExtents_, cmptMag(u)));
+}
+
+
+bool Foam::particleShapes::box::planeCut
+(
+    const vector& n,
+    const scalar distance,
+    scalar& volume,
+    vector& centroid,
+    scalar& sectionArea
+) const
+{
+    volume = planeOverlap(n, distance);
+    centroid = Zero;
+    sectionArea = 0;
+    if (volume <= 0)
+    {
+        return true;
+    }
+
+    // Clip each face to the side n.r >= distance (Sutherland-Hodgman); the
+    // edges' crossings of the plane bound the section
+    pointField corners;
+    faceList faces;
+    drawing(corners, faces);
+    const scalar tol = 1e-12*mag(halfExtents_);
+    auto side = [&](const point& r) { return (n & r) - distance; };
+
+    DynamicList<DynamicList<point>> polygons;
+    DynamicList<point> crossings;
+    for (const face& f : faces)
+    {
+        DynamicList<point> clipped;
+        forAll(f, k)
+        {
+            const point& a = corners[f[k]];
+            const point& b = corners[f.nextLabel(k)];
+            const scalar sa = side(a);
+            const scalar sb = side(b);
+            if (sa >= 0)
+            {
+                clipped.append(a);
+            }
+            if ((sa >= 0) != (sb >= 0))
+            {
+                const point x(a + sa/(sa - sb)*(b - a));
+                clipped.append(x);
+                bool seen = false;
+                for (const point& c : crossings)
+                {
+                    seen = seen || mag(c - x) < tol;
+                }
+                if (!seen)
+                {
+                    crossings.append(x);
+                }
+            }
+        }
+        if (clipped.size() >= 3)
+        {
+            polygons.append(clipped);
+        }
+    }
+
+    // The section: the crossings in order of angle about their mean
+    point middle(Zero);
+    for (const point& c : crossings)
+    {
+        middle += c/crossings.size();
+    }
+    const vector e1
+    (
+        normalised(n ^ (mag(n.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0)))
+    );
+    const vector e2(n ^ e1);
+    List<Tuple2<scalar, label>> order(crossings.size());
+    forAll(crossings, k)
+    {
+        const vector d(crossings[k] - middle);
+        order[k] = Tuple2<scalar, label>(atan2(d & e2, d & e1), k);
+    }
+    Foam::sort(order);
+    DynamicList<point> section(crossings.size());
+    for (const auto& o : order)
+    {
+        section.append(crossings[o.second()]);
+    }
+    if (section.size() >= 3)
+    {
+        polygons.append(section);
+    }
+
+    // Volume-weighted centroid of the tetrahedra from an inner point to
+    // each face's fan of triangles (the clipped part is convex)
+    point inner(Zero);
+    label nPoints = 0;
+    for (const DynamicList<point>& poly : polygons)
+    {
+        for (const point& r : poly)
+        {
+            inner += r;
+            ++nPoints;
+        }
+    }
+    inner /= nPoints;
+    scalar sumV = 0;
+    vector sumC(Zero);
+    for (const DynamicList<point>& poly : polygons)
+    {
+        for (label k = 1; k + 1 < poly.size(); ++k)
+        {
+            const scalar v =
+                mag(((poly[k] - poly[0]) ^ (poly[k + 1] - poly[0])) & (poly[0] - inner))/6;
+            sumV += v;
+            sumC += v*0.25*(inner + poly[0] + poly[k] + poly[k + 1]);
+        }
+    }
+    centroid = sumC/max(sumV, VSMALL);
+    for (label k = 1; k + 1 < section.size(); ++k)
+    {
+        sectionArea += 0.5*mag((section[k] - section[0]) ^ (section[k + 1] - section[0]));
+    }
+    return true;
 }
 
 

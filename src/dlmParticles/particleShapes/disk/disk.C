@@ -171,6 +171,12 @@ bool Foam::particleShapes::disk::pairOverlap
 }
 
 
+Foam::scalar Foam::particleShapes::disk::support(const vector& u) const
+{
+    return radius_*mag(vector(u.x(), u.y(), 0));
+}
+
+
 void Foam::particleShapes::disk::write(Ostream& os) const
 {
     os.writeEntry("shape", typeName);

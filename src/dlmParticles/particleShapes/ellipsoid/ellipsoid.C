@@ -340,6 +340,44 @@ Foam::scalar Foam::particleShapes::ellipsoid::planeOverlap
 }
 
 
+Foam::scalar Foam::particleShapes::ellipsoid::support(const vector& u) const
+{
+    return mag(cmptMultiply(semiAxes_, u));
+}
+
+
+bool Foam::particleShapes::ellipsoid::planeCut
+(
+    const vector& n,
+    const scalar distance,
+    scalar& volume,
+    vector& centroid,
+    scalar& sectionArea
+) const
+{
+    // In the frame u = E^-1 r the ellipsoid is the unit sphere and the
+    // plane is m.u = distance/|E n|, m = E n/|E n|: the cap of height h
+    // has its centroid at 3 (2 - h)^2/(4 (3 - h)) along m and its base the
+    // area pi (1 - (1 - h)^2); volumes scale by abc, areas along the
+    // plane's normal by abc/|E n|
+    const vector En(cmptMultiply(semiAxes_, n));
+    const scalar scale = mag(En);
+    const scalar unitDistance = distance/scale;
+    const scalar h = min(max(1 - unitDistance, scalar(0)), scalar(2));
+    const scalar abc = cmptProduct(semiAxes_);
+
+    volume = abc*overlapGeometry::sphereCapVolume(1, h);
+    sectionArea =
+        abc/scale*constant::mathematical::pi
+       *max(1 - sqr(unitDistance), scalar(0));
+    centroid =
+        h > 0
+      ? cmptMultiply(semiAxes_, En/scale)*3*sqr(2 - h)/(4*(3 - h))
+      : vector::zero;
+    return true;
+}
+
+
 void Foam::particleShapes::ellipsoid::write(Ostream& os) const
 {
     os.writeEntry("shape", typeName);

@@ -169,10 +169,15 @@ Foam::scalar Foam::particleShape::planeOverlap
     const scalar distance
 ) const
 {
-    FatalErrorInFunction
-        << "Shape " << type() << " has no exact formula for its overlap with"
-        << " a wall" << exit(FatalError);
-    return 0;
+    scalar volume, sectionArea;
+    vector centroid;
+    if (!planeCut(n, distance, volume, centroid, sectionArea))
+    {
+        FatalErrorInFunction
+            << "Shape " << type() << " has no exact formula for its overlap"
+            << " with a wall" << exit(FatalError);
+    }
+    return volume;
 }
 
 
@@ -182,6 +187,19 @@ bool Foam::particleShape::pairOverlap
     const scalar distance,
     scalar& volume,
     scalar& planeDistance
+) const
+{
+    return false;
+}
+
+
+bool Foam::particleShape::planeCut
+(
+    const vector& n,
+    const scalar distance,
+    scalar& volume,
+    vector& centroid,
+    scalar& sectionArea
 ) const
 {
     return false;

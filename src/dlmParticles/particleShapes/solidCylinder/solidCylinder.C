@@ -182,6 +182,111 @@ void Foam::particleShapes::solidCylinder::drawing
 }
 
 
+Foam::scalar Foam::particleShapes::solidCylinder::support
+(
+    const vector& u
+) const
+{
+    return radius_*mag(vector(u.x(), u.y(), 0)) + 0.5*length_*mag(u.z());
+}
+
+
+bool Foam::particleShapes::solidCylinder::planeCut
+(
+    const vector& n,
+    const scalar distance,
+    scalar& volume,
+    vector& centroid,
+    scalar& sectionArea
+) const
+{
+    // Across the disk, along s = u.(x, y) with u the normal's direction in
+    // the end plane, the chord is 2 c(s), c = sqrt(r^2 - s^2), and the
+    // part beyond the plane spans z from zLow(s) to the upper end (the
+    // normal turned to point up, z mirrored back at the end). zLow is
+    // -H where the plane passes below the lower end, linear in s where it
+    // crosses the mantle and above H (nothing) elsewhere, so the volume and
+    // its moments are sums of the closed-form integrals of c, s c, s^2 c.
+    const scalar r = radius_;
+    const scalar H = 0.5*length_;
+    const scalar t = Foam::sqrt(sqr(n.x()) + sqr(n.y()));
+    const scalar nz = mag(n.z());
+    const scalar flip = n.z() < 0 ? -1 : 1;
+
+    volume = 0;
+    sectionArea = 0;
+    centroid = Zero;
+
+    if (t < SMALL)
+    {
+        // A plane across the axis: a slab of the cylinder
+        const scalar zLow = max(distance/nz, -H);
+        if (zLow < H)
+        {
+            volume = constant::mathematical::pi*sqr(r)*(H - zLow);
+            centroid = vector(0, 0, flip*0.5*(H + zLow));
+            sectionArea = distance/nz > -H ? constant::mathematical::pi*sqr(r) : 0;
+        }
+        return true;
+    }
+
+    // Antiderivatives of c, s c and s^2 c, s clipped to the disk
+    auto integrals = [r](const scalar s0)
+    {
+        const scalar s = min(max(s0, -r), r);
+        const scalar c = Foam::sqrt(max(sqr(r) - sqr(s), scalar(0)));
+        const scalar angle = Foam::asin(s/r);
+        return vector
+        (
+            0.5*(s*c + sqr(r)*angle),
+            -pow3(c)/3,
+            (s*(2*sqr(s) - sqr(r))*c + pow4(r)*angle)/8
+        );
+    };
+
+    const vector u(n.x()/t, n.y()/t, 0);
+    scalar Ms = 0;
+    scalar Mz = 0;
+
+    if (nz < SMALL)
+    {
+        // A plane along the axis: the segment beyond s0, the full length
+        const scalar s0 = distance/t;
+        const vector I(integrals(r) - integrals(s0));
+        volume = 2*length_*I.x();
+        Ms = 2*length_*I.y();
+        sectionArea =
+            mag(s0) < r ? 2*length_*Foam::sqrt(sqr(r) - sqr(s0)) : 0;
+    }
+    else
+    {
+        // zLow = (distance - t s)/nz reaches H at sTop, -H at sBottom
+        const scalar sTop = (distance - nz*H)/t;
+        const scalar sBottom = (distance + nz*H)/t;
+
+        // Crossing the mantle: zLow = q0 + q1 s, the height H - zLow
+        const vector I(integrals(sBottom) - integrals(sTop));
+        const scalar q0 = distance/nz;
+        const scalar q1 = -t/nz;
+        volume += 2*((H - q0)*I.x() - q1*I.y());
+        Ms += 2*((H - q0)*I.y() - q1*I.z());
+        Mz += (sqr(H) - sqr(q0))*I.x() - 2*q0*q1*I.y() - sqr(q1)*I.z();
+        sectionArea = 2*I.x()/nz;
+
+        // Below the lower end: the full length
+        const vector J(integrals(r) - integrals(sBottom));
+        volume += 2*length_*J.x();
+        Ms += 2*length_*J.y();
+    }
+
+    if (volume > 0)
+    {
+        centroid = (Ms/volume)*u + vector(0, 0, flip*Mz/volume);
+    }
+    return true;
+}
+
+
 void Foam::particleShapes::solidCylinder::write(Ostream& os) const
 {
     os.writeEntry("shape", typeName);

@@ -162,6 +162,12 @@ bool Foam::particleShapes::sphere::pairOverlap
 }
 
 
+Foam::scalar Foam::particleShapes::sphere::support(const vector& u) const
+{
+    return radius_;
+}
+
+
 void Foam::particleShapes::sphere::write(Ostream& os) const
 {
     os.writeEntry("shape", typeName);

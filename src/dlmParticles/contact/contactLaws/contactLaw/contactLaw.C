@@ -157,6 +157,7 @@ Foam::contactLaw::contactLaw
     nDimensions_(nDimensions),
     restitution_(dict.get<scalar>("restitution")),
     friction_(dict.get<scalar>("friction")),
+    rollingFriction_(dict.getOrDefault<scalar>("rollingFriction", 0)),
     tangential_
     (
         tangentialTypeNames.getOrDefault
@@ -201,6 +202,13 @@ Foam::contactLaw::contactLaw
             << dict.dictName() << " must not be negative"
             << exit(FatalIOError);
     }
+    if (rollingFriction_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "rollingFriction " << rollingFriction_ << " of contact pair "
+            << dict.dictName() << " must not be negative"
+            << exit(FatalIOError);
+    }
     if (tangentialStiffnessRatio_ <= 0 || tangentialDampingRatio_ < 0)
     {
         FatalIOErrorInFunction(dict)
@@ -219,7 +227,7 @@ Foam::wordList Foam::contactLaw::keywords() const
     ({
         "materials", "law", "restitution", "friction", "tangential",
         "frictionLimit", "tangentialStiffnessRatio", "tangentialDampingRatio",
-        "clipNormalForce", "stiffness", "contactTime"
+        "clipNormalForce", "stiffness", "contactTime", "rollingFriction"
     });
     if (exponent() != 1)
     {
@@ -237,14 +245,38 @@ Foam::scalar Foam::contactLaw::normalForce
     const scalar mass,
     const scalar approachSpeed,
     scalar& stiffness,
-    scalar& damping
+    scalar& damping,
+    const scalar volumeExponent
 ) const
 {
     scalar force;
     elastic(V, delta, radius, force, stiffness);
-    damping = beta_*sqrt(mass*stiffness);
+    const scalar n =
+        volumeExponent > 0 ? forceExponent(volumeExponent) : exponent();
+    damping = (n == exponent() ? beta_ : dampingAt(n))*sqrt(mass*stiffness);
     const scalar Fn = force + damping*approachSpeed;
     return clip_ ? max(Fn, scalar(0)) : Fn;
+}
+
+
+Foam::scalar Foam::contactLaw::dampingAt(const scalar n) const
+{
+    const scalar first = 1;
+    const scalar spacing = 0.25;
+    if (betaTable_.empty())
+    {
+        betaTable_.setSize(9);
+        forAll(betaTable_, k)
+        {
+            betaTable_[k] =
+                max(dampingFor(first + spacing*k, restitution_, clip_), 0);
+        }
+    }
+    const scalar x =
+        min(max((n - first)/spacing, scalar(0)), scalar(betaTable_.size() - 1));
+    const label k = min(label(x), betaTable_.size() - 2);
+    const scalar s = x - k;
+    return (1 - s)*betaTable_[k] + s*betaTable_[k + 1];
 }
 
 

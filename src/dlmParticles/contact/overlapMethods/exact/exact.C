@@ -32,28 +32,45 @@ Foam::overlapMethods::exact::exact
 {
     // Fail at start, not at the first contact, for shapes without formulas:
     // one particle of each shape type stands for the others
+    // (a type meets itself only if two particles have it)
     const PtrList<dlmParticle>& particles = cloud.particles();
     DynamicList<label> representatives;
+    DynamicList<label> counts;
     forAll(particles, i)
     {
-        bool seen = false;
-        for (const label r : representatives)
+        label seen = -1;
+        forAll(representatives, k)
         {
-            seen = seen || particles[r].shape().type() == particles[i].shape().type();
+            if
+            (
+                particles[representatives[k]].shape().type()
+             == particles[i].shape().type()
+            )
+            {
+                seen = k;
+            }
         }
-        if (!seen)
+        if (seen < 0)
         {
             representatives.append(i);
+            counts.append(1);
+        }
+        else
+        {
+            ++counts[seen];
         }
     }
-    for (const label i : representatives)
+    forAll(representatives, a)
     {
-        for (const label j : representatives)
+        forAll(representatives, b)
         {
+            const label i = representatives[a];
+            const label j = representatives[b];
             scalar volume, planeDistance;
             if
             (
-                !particles[i].shape().pairOverlap
+                (a != b || counts[a] > 1)
+             && !particles[i].shape().pairOverlap
                 (
                     particles[j].shape(), 0, volume, planeDistance
                 )
