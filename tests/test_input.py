@@ -151,13 +151,6 @@ BAD_INPUT = [
     bad("orientation zero", particles("sphere { " + GOOD + " orientation (0 (0 0 0)); }"),
         "orientation (0 (0 0 0)) of particle sphere is the zero quaternion", "(1 (0 0 0))",
         "particleProperties.particles.sphere"),
-    bad("two ellipsoids with contacts",
-        particles("egg { shape ellipsoid; semiAxes (0.005 0.004 0.003); density 2000;"
-                  " position (0.015 0.015 0.025); }"
-                  " egg2 { shape ellipsoid; semiAxes (0.005 0.004 0.003); density 2000;"
-                  " position (0.015 0.015 0.04); }", "contact { " + BOTH_PAIRS + " }"),
-        "Particle egg has shape ellipsoid", "between particles only for round shapes",
-        "2 particles", "'active false'", "particleProperties.contact"),
     bad("sphere on a 2D mesh", particles("ball { shape sphere; radius 0.01; density 2500; position (0.1 0.3 0); }"),
         "Particle ball", "3D but the mesh is 2D", source="fallingDisk"),
     bad("disk on a 3D mesh", particles("coin { " + GOOD.replace("sphere;", "disk;") + " }"),
@@ -175,6 +168,12 @@ BAD_INPUT = [
         particles("a { " + GOOD + " } b { " + GOOD.replace("0.025)", "0.032)") + " }",
                   "contact { " + BOTH_PAIRS + " }"),
         "Particles a and b", "overlap by 0.003 (30 % of the smaller diameter)",
+        "contact.maxStartOverlap 0.05", "particleProperties"),
+    bad("boxes overlap beyond the contact laws",
+        particles("a { shape box; halfExtents (0.005 0.005 0.002); density 2000; position (0.015 0.015 0.025); }"
+                  " b { shape box; halfExtents (0.005 0.005 0.002); density 2000; position (0.015 0.015 0.0286); }",
+                  "contact { " + BOTH_PAIRS + " }"),
+        "Particles a and b", "overlap by 0.0004 (10 % of the smaller thickness across it)",
         "contact.maxStartOverlap 0.05", "particleProperties"),
     bad("sphere centred on the floor, with contacts",
         particles("a { " + GOOD.replace("0.025)", "0)") + " }", "contact { " + PAIRS + " }"),

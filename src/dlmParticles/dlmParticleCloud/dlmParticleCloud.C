@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dlmParticleCloud.H"
+#include "convexOverlap.H"
 #include "zeroGradientFvPatchFields.H"
 #include "surfaceFields.H"
 #include "IFstream.H"
@@ -220,10 +221,8 @@ void Foam::dlmParticleCloud::checkParticles()
                 << " shape such as sphere." << exit(FatalError);
         }
 
-        // Contacts of a shape that is not round: with walls, from the
-        // part of the shape beyond a wall's tangent plane (planeCut);
-        // between particles not yet (the overlap methods take each
-        // particle as the sphere of its bounding radius)
+        // Contacts of a shape that is not round, with walls and with
+        // other particles, come from its parts beyond planes (planeCut)
         if
         (
             !p.shape().round()
@@ -240,18 +239,8 @@ void Foam::dlmParticleCloud::checkParticles()
                     << p.shape().type() << ", whose contacts with walls are"
                     << " not implemented (no formula for its part beyond a"
                     << " plane). Use 'active false' in the contact settings,"
-                    << " or an ellipsoid or box." << exit(FatalIOError);
-            }
-            if (particles_.size() > 1)
-            {
-                FatalIOErrorInFunction(properties_.subDict("contact"))
-                    << "Particle " << p.name() << " has shape "
-                    << p.shape().type() << ": its contacts with walls are"
-                    << " implemented, but contacts between particles only"
-                    << " for round shapes (sphere, disk), and this scene has "
-                    << particles_.size() << " particles. Use 'active false'"
-                    << " in the contact settings for a scene whose particles"
-                    << " do not touch." << exit(FatalIOError);
+                    << " or an ellipsoid, cylinder or box."
+                    << exit(FatalIOError);
             }
         }
 
@@ -389,24 +378,46 @@ void Foam::dlmParticleCloud::checkOverlaps() const
         {
             const dlmParticle& pj = particles_[order[b]];
             const scalar Rj = pj.shape().boundingRadius();
-            const scalar depth =
-                Ri + Rj - mag(pi.position() - pj.position());
+            scalar depth = Ri + Rj - mag(pi.position() - pj.position());
+            // Round shapes: the depth and diameters; others: the least
+            // depth (convexOverlap) and the thicknesses across it
+            scalar smaller = 2*min(Ri, Rj);
+            const bool round = pi.shape().round() && pj.shape().round();
+            if (!round && depth > 0)
+            {
+                const convexOverlap::result o = convexOverlap().overlap
+                (
+                    pi.shape(), pi.position(), pi.R(),
+                    pj.shape(), pj.position(), pj.R()
+                );
+                depth = o.depth;
+                const vector ni(pi.R().T() & o.normal);
+                const vector nj(pj.R().T() & o.normal);
+                smaller = min
+                (
+                    pi.shape().support(ni) + pi.shape().support(-ni),
+                    pj.shape().support(nj) + pj.shape().support(-nj)
+                );
+            }
+            const word size
+            (
+                round ? "smaller diameter" : "smaller thickness across it"
+            );
             // Touching (as in a packing) is no overlap, to round-off
-            const scalar limit =
-                max(allowed*2*min(Ri, Rj), 1e-9*(Ri + Rj));
+            const scalar limit = max(allowed*smaller, 1e-9*(Ri + Rj));
             if (depth > limit)
             {
                 FatalErrorInFunction
                     << "Particles " << pi.name() << " and " << pj.name()
                     << " (" << source << ") overlap by " << depth << " ("
-                    << 50*depth/min(Ri, Rj) << " % of the smaller diameter)"
+                    << 100*depth/smaller << " % of the " << size << ")"
                     << " at the start: ";
                 if (contact_.valid())
                 {
                     FatalError
                         << "more than the contact laws resolve"
                         << " (contact.maxStartOverlap " << allowed
-                        << " of the smaller diameter)";
+                        << " of the " << size << ")";
                 }
                 else
                 {

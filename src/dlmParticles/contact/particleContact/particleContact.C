@@ -520,7 +520,10 @@ void Foam::particleContact::applyContact
         rj = location - position_[j];
         relative += velocity_[j] + (omega_[j] ^ rj);
         invMass += inverseMass(j);
-        radius = Ri*Rj/(Ri + Rj);
+        if (curvatureRadius <= 0)
+        {
+            radius = Ri*Rj/(Ri + Rj);
+        }
         smallerRadius = min(Ri, Rj);
     }
     maxOverlapRatio_ = max(maxOverlapRatio_, 0.5*depth/smallerRadius);
@@ -570,9 +573,11 @@ void Foam::particleContact::applyContact
         const scalar s = depth/(-approach*hc);
         const vector correction(-(2*s - 1)*damping*approach*normal);
         exitForce_[i] += correction;
+        exitTorque_[i] += ri ^ correction;
         if (j >= 0)
         {
             exitForce_[j] -= correction;
+            exitTorque_[j] -= rj ^ correction;
         }
     }
     if (hc > 0 && approach > 0 && depth < approach*hc && Fn > 0)
@@ -583,9 +588,11 @@ void Foam::particleContact::applyContact
             -(2*s - 1)*min(damping*approach, Fn)*normal
         );
         onsetForce_[i] += correction;
+        onsetTorque_[i] += ri ^ correction;
         if (j >= 0)
         {
             onsetForce_[j] -= correction;
+            onsetTorque_[j] -= rj ^ correction;
         }
     }
 
@@ -753,14 +760,21 @@ void Foam::particleContact::evaluate(const scalar h)
                     i, j, law,
                     law.tangential() == contactLaw::tangentialType::spring
                   ? &pairSpring_[k] : nullptr,
-                    o.volume, o.depth, o.location, o.normal, h
+                    o.volume, o.depth, o.location, o.normal, h,
+                    o.curvatureRadius, o.volumeExponent
                 );
             }
             else
             {
                 pairSpring_[k] = Zero;
             }
-            if (lubricationViscosity_ > 0)
+            // The lubrication film between round shapes only
+            if
+            (
+                lubricationViscosity_ > 0
+             && particles[i].shape().round()
+             && particles[j].shape().round()
+            )
             {
                 applyLubrication(i, j, -o.depth, o.location, o.normal);
             }
@@ -1005,11 +1019,15 @@ void Foam::particleContact::evolve
     force_.setSize(n);
     torque_.setSize(n);
     onsetForce_.setSize(n);
+    onsetTorque_.setSize(n);
     exitForce_.setSize(n);
+    exitTorque_.setSize(n);
     force_ = Zero;
     torque_ = Zero;
     onsetForce_ = Zero;
+    onsetTorque_ = Zero;
     exitForce_ = Zero;
+    exitTorque_ = Zero;
     forAll(particles, i)
     {
         const dlmParticle& p = particles[i];
@@ -1082,18 +1100,22 @@ void Foam::particleContact::evolve
                   + 0.5*hClose
                    *(
                         angularAccel[i]
-                      + angularAcceleration(i, orientation_[i], torque_[i])
+                      + angularAcceleration
+                        (
+                            i, orientation_[i], torque_[i] + onsetTorque_[i]
+                        )
                     );
                 impulse[i] +=
                     0.5*hClose*(force0[i] + force_[i] + onsetForce_[i]);
-                angularImpulse[i] += 0.5*hClose*(torque0[i] + torque_[i]);
+                angularImpulse[i] +=
+                    0.5*hClose*(torque0[i] + torque_[i] + onsetTorque_[i]);
             }
             if (h == 0)
             {
                 continue;
             }
             force0[i] = force_[i] + exitForce_[i];
-            torque0[i] = torque_[i];
+            torque0[i] = torque_[i] + exitTorque_[i];
             if (inverseMass_[i] > 0)
             {
                 const vector dv
@@ -1105,7 +1127,7 @@ void Foam::particleContact::evolve
                     0.5*h
                    *(
                         angularAccel[i]
-                      + angularAcceleration(i, orientation_[i], torque_[i])
+                      + angularAcceleration(i, orientation_[i], torque0[i])
                     )
                 );
                 halfVelocity[i] = velocity_[i] + dv;
@@ -1138,7 +1160,7 @@ void Foam::particleContact::evolve
                             (
                                 i,
                                 orientation_[i],
-                                torque_[i]
+                                torque0[i]
                             )
                         );
                 }
@@ -1147,7 +1169,9 @@ void Foam::particleContact::evolve
             force_[i] = Zero;
             torque_[i] = Zero;
             onsetForce_[i] = Zero;
+            onsetTorque_[i] = Zero;
             exitForce_[i] = Zero;
+            exitTorque_[i] = Zero;
         }
         if (h == 0)
         {

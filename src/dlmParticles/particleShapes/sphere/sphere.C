@@ -138,6 +138,24 @@ Foam::scalar Foam::particleShapes::sphere::planeOverlap
 }
 
 
+bool Foam::particleShapes::sphere::planeCut
+(
+    const vector& n,
+    const scalar distance,
+    scalar& volume,
+    vector& centroid,
+    scalar& sectionArea
+) const
+{
+    const scalar R = radius_;
+    const scalar h = min(max(R - distance, scalar(0)), 2*R);
+    volume = overlapGeometry::sphereCapVolume(R, h);
+    sectionArea = constant::mathematical::pi*h*(2*R - h);
+    centroid = h > 0 ? n*3*sqr(2*R - h)/(4*(3*R - h)) : vector::zero;
+    return true;
+}
+
+
 bool Foam::particleShapes::sphere::pairOverlap
 (
     const particleShape& other,

@@ -7,6 +7,7 @@
 #include "exact.H"
 #include "dlmParticleCloud.H"
 #include "addToRunTimeSelectionTable.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -66,14 +67,18 @@ Foam::overlapMethods::exact::exact
         {
             const label i = representatives[a];
             const label j = representatives[b];
-            scalar volume, planeDistance;
+            const particleShape& shapeI = particles[i].shape();
+            const particleShape& shapeJ = particles[j].shape();
+            scalar volume, planeDistance, area;
+            vector centroid;
             if
             (
                 (a != b || counts[a] > 1)
-             && !particles[i].shape().pairOverlap
-                (
-                    particles[j].shape(), 0, volume, planeDistance
-                )
+             && !shapeI.pairOverlap(shapeJ, 0, volume, planeDistance)
+             && !(
+                    shapeI.planeCut(vector(0, 0, 1), 0, volume, centroid, area)
+                 && shapeJ.planeCut(vector(0, 0, 1), 0, volume, centroid, area)
+                 )
             )
             {
                 FatalIOErrorInFunction(dict)
@@ -119,6 +124,36 @@ void Foam::overlapMethods::exact::overlaps
         const label j = pairs[start + b].second();
         const point& Xi = positions[i];
         pairOverlap& o = result[b];
+        o.curvatureRadius = -1;
+        o.volumeExponent = -1;
+
+        if (!shapes_[i].round() || !shapes_[j].round())
+        {
+            o.volume = 0;
+            o.depth = radii_[i] + radii_[j] - mag(positions[j] - Xi);
+            o.normal = centreNormal(Xi, positions[j]);
+            o.location = Xi;
+            if (o.depth > 0)
+            {
+                const convexOverlap::result c = convex_.overlap
+                (
+                    shapes_[i], Xi, orientations[i].R(),
+                    shapes_[j], positions[j], orientations[j].R()
+                );
+                o.depth = c.depth;
+                o.normal = c.normal;
+                if (c.volume > 0 && c.sectionArea > 0)
+                {
+                    o.volume = c.volume;
+                    o.location = c.location;
+                    o.curvatureRadius =
+                        sqr(c.sectionArea)/(4*constant::mathematical::pi*c.volume);
+                    o.volumeExponent =
+                        min(max(c.sectionArea*c.depth/c.volume, scalar(1)), scalar(3));
+                }
+            }
+            continue;
+        }
 
         const scalar distance = mag(positions[j] - Xi);
         o.normal = centreNormal(Xi, positions[j]);

@@ -147,6 +147,8 @@ void Foam::overlapMethods::grid::overlaps
         const scalar Ri = particles[i].shape().boundingRadius();
         const scalar Rj = particles[j].shape().boundingRadius();
         pairOverlap& o = result[b];
+        o.curvatureRadius = -1;
+        o.volumeExponent = -1;
 
         o.volume = nDims == 3 ? sums[4*b] : sums[4*b]/depth;
         o.depth = equivalentDepth(o.volume, Ri*Rj/(Ri + Rj), nDims);
