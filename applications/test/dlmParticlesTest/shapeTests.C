@@ -454,6 +454,34 @@ TEST_CASE("plane cuts and support functions against sums over a fine grid", "[ge
 }
 
 
+TEST_CASE("a cylinder cut nearly along its axis: the same part as along it", "[geometry]")
+{
+    // A plane tilted by 1e-15 to 1e-2 from the axis: the part beyond it
+    // changes smoothly from the exact segment prism (the closed forms
+    // divided by the tilt lost all precision below 1e-8)
+    autoPtr<particleShape> shape(makeShape("shape cylinder; radius 0.4; length 0.6;"));
+    const scalar d = 0.39;
+    scalar V0, area0;
+    vector c0;
+    shape->planeCut(vector(1, 0, 0), d, V0, c0, area0);
+    CHECK(V0 == Approx(0.6*overlapGeometry::circleSegmentArea(0.4, 0.01)).epsilon(1e-12));
+    for (const scalar tilt : {1e-15, 1e-12, 1e-9, 1e-6, 1e-4, 1e-2})
+    {
+        const vector n(Foam::cos(tilt), 0, Foam::sin(tilt));
+        scalar V, area;
+        vector c;
+        shape->planeCut(n, d, V, c, area);
+        INFO("tilt " << tilt << ": volume " << V << ", section " << area);
+        // The segment's prism cut by the tilted plane: its volume changes
+        // at second order (0.058 tilt^2 here), its section at first, and
+        // its centroid at first along the axis (c0 L^3/(6 V) = 4.5 tilt)
+        CHECK(mag(V - V0) < 1e-12*V0 + 0.1*sqr(tilt));
+        CHECK(mag(area - area0) < 1e-9*area0 + tilt*area0);
+        CHECK(mag(c - c0) < 1e-9 + 5*tilt);
+    }
+}
+
+
 TEST_CASE("convex overlaps: the sphere lens exactly, other pairs against fine-grid sums", "[geometry]")
 {
     const convexOverlap convex;

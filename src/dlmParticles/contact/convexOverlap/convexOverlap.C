@@ -87,61 +87,177 @@ Foam::convexOverlap::result Foam::convexOverlap::overlap
     // The centre line first: most candidate pairs are apart along it
     vector n(magD > VSMALL ? d/magD : vector(0, 0, 1));
     scalar least = delta(n);
-    if (least > 0)
+    if (least <= 0)
     {
-        for (const vector& e : directions_)
+        o.depth = least;
+        o.normal = n;
+        return o;
+    }
+
+    // Where the support functions have kinks, in the global frame: the
+    // least depth of shapes with faces and edges lies on them. b's
+    // support is taken at -n: its corners turn round
+    DynamicList<vector> ridges, corners, ridgesB, cornersB;
+    a.supportKinks(ridges, corners);
+    forAll(ridges, k)
+    {
+        ridges[k] = Ra & ridges[k];
+    }
+    forAll(corners, k)
+    {
+        corners[k] = Ra & corners[k];
+    }
+    b.supportKinks(ridgesB, cornersB);
+    for (const vector& r : ridgesB)
+    {
+        ridges.append(Rb & r);
+    }
+    for (const vector& c : cornersB)
+    {
+        corners.append(-(Rb & c));
+    }
+
+    // A direction facing away from b overlaps by more than the shapes'
+    // sizes: never the least
+    auto tryDirection = [&](const vector& e)
+    {
+        if ((e & d) >= 0)
         {
-            // A direction facing away from b overlaps by more than the
-            // shapes' sizes: never the least
-            if ((e & d) > 0)
+            const scalar candidate = delta(e);
+            if (candidate < least)
             {
-                const scalar candidate = delta(e);
-                if (candidate < least)
-                {
-                    least = candidate;
-                    n = e;
-                }
+                least = candidate;
+                n = e;
             }
+        }
+    };
+    for (const vector& e : directions_)
+    {
+        tryDirection(e);
+    }
+    for (const vector& c : corners)
+    {
+        tryDirection(c);
+    }
+    forAll(ridges, k)
+    {
+        // Where two ridges cross (a face's normal, the normal across two
+        // edges), and the ridge's point nearest the centre line
+        for (label l = k + 1; l < ridges.size(); ++l)
+        {
+            const vector cross(ridges[k] ^ ridges[l]);
+            const scalar magCross = mag(cross);
+            if (magCross > 1e-6)
+            {
+                tryDirection(cross/magCross);
+                tryDirection(-cross/magCross);
+            }
+        }
+        const vector onRidge(d - (d & ridges[k])*ridges[k]);
+        if (mag(onRidge) > 1e-6*magD)
+        {
+            tryDirection(onRidge/mag(onRidge));
         }
     }
 
     // Pattern search on the sphere: eight neighbours at angle step in the
     // tangent plane, moving to the best, halving the step when none is
-    // better
-    scalar step = spacing_;
-    while (least > 0 && step > 1e-9)
+    // better; then along each ridge near the point found (where the
+    // pattern search stalls: the depth rises steeply off the ridge), by
+    // golden sections, until neither improves
+    const scalar tolerance = 1e-9;
+    for (label round = 0; round < 4 && least > 0; ++round)
     {
-        vector t1(n ^ vector(1, 0, 0));
-        if (magSqr(t1) < 0.1)
+        scalar step = spacing_;
+        while (least > 0 && step > tolerance)
         {
-            t1 = n ^ vector(0, 1, 0);
-        }
-        t1 /= mag(t1);
-        const vector t2(n ^ t1);
-        bool moved = false;
-        vector best(n);
-        for (label k = 0; k < 8; ++k)
-        {
-            const scalar angle = constant::mathematical::pi*k/4;
-            const vector e
-            (
-                cos(step)*n + sin(step)*(cos(angle)*t1 + sin(angle)*t2)
-            );
-            const scalar candidate = delta(e);
-            if (candidate < least)
+            vector t1(n ^ vector(1, 0, 0));
+            if (magSqr(t1) < 0.1)
             {
-                least = candidate;
-                best = e;
-                moved = true;
+                t1 = n ^ vector(0, 1, 0);
+            }
+            t1 /= mag(t1);
+            const vector t2(n ^ t1);
+            bool moved = false;
+            vector best(n);
+            for (label k = 0; k < 8; ++k)
+            {
+                const scalar angle = constant::mathematical::pi*k/4;
+                const vector e
+                (
+                    cos(step)*n + sin(step)*(cos(angle)*t1 + sin(angle)*t2)
+                );
+                const scalar candidate = delta(e);
+                if (candidate < least)
+                {
+                    least = candidate;
+                    best = e;
+                    moved = true;
+                }
+            }
+            if (moved)
+            {
+                n = best/mag(best);
+            }
+            else
+            {
+                step *= 0.5;
             }
         }
-        if (moved)
+
+        bool improved = false;
+        for (const vector& r : ridges)
         {
-            n = best/mag(best);
+            vector m(n - (n & r)*r);
+            const scalar magM = mag(m);
+            if (magM < 1e-9 || mag(n & r) > Foam::sin(spacing_))
+            {
+                continue;
+            }
+            m /= magM;
+            const vector t(r ^ m);
+            auto along = [&](const scalar phi)
+            {
+                return delta(cos(phi)*m + sin(phi)*t);
+            };
+            const scalar golden = 0.5*(Foam::sqrt(scalar(5)) - 1);
+            scalar lo = -spacing_;
+            scalar hi = spacing_;
+            scalar x1 = hi - golden*(hi - lo);
+            scalar x2 = lo + golden*(hi - lo);
+            scalar f1 = along(x1);
+            scalar f2 = along(x2);
+            while (hi - lo > tolerance)
+            {
+                if (f1 < f2)
+                {
+                    hi = x2;
+                    x2 = x1;
+                    f2 = f1;
+                    x1 = hi - golden*(hi - lo);
+                    f1 = along(x1);
+                }
+                else
+                {
+                    lo = x1;
+                    x1 = x2;
+                    f1 = f2;
+                    x2 = lo + golden*(hi - lo);
+                    f2 = along(x2);
+                }
+            }
+            const scalar phi = 0.5*(lo + hi);
+            const scalar candidate = along(phi);
+            if (candidate < least*(1 - 1e-12))
+            {
+                least = candidate;
+                n = cos(phi)*m + sin(phi)*t;
+                improved = true;
+            }
         }
-        else
+        if (!improved)
         {
-            step *= 0.5;
+            break;
         }
     }
 

@@ -527,6 +527,21 @@ void Foam::particleContact::applyContact
         smallerRadius = min(Ri, Rj);
     }
     maxOverlapRatio_ = max(maxOverlapRatio_, 0.5*depth/smallerRadius);
+
+    // The mass that the contact moves along its normal: with the turn of
+    // a body that it pushes off its centroid (not a sphere's), so that
+    // the damping and the sub-step fit the contact's true frequency
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    if (!particles[i].shape().round() || (j >= 0 && !particles[j].shape().round()))
+    {
+        const vector ci(ri ^ normal);
+        invMass += ci & angularAcceleration(i, orientation_[i], ci);
+        if (j >= 0)
+        {
+            const vector cj(rj ^ normal);
+            invMass += cj & angularAcceleration(j, orientation_[j], cj);
+        }
+    }
     const scalar mass = 1/invMass;
 
     // relative: velocity of j (or the wall) seen from i; normal from i to j

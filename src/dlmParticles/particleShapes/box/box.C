@@ -349,6 +349,18 @@ bool Foam::particleShapes::box::planeCut
 }
 
 
+void Foam::particleShapes::box::supportKinks
+(
+    DynamicList<vector>& ridgeAxes,
+    DynamicList<vector>& cornerDirections
+) const
+{
+    ridgeAxes.append(vector(1, 0, 0));
+    ridgeAxes.append(vector(0, 1, 0));
+    ridgeAxes.append(vector(0, 0, 1));
+}
+
+
 void Foam::particleShapes::box::write(Ostream& os) const
 {
     os.writeEntry("shape", typeName);

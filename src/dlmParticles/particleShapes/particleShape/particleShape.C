@@ -193,6 +193,14 @@ bool Foam::particleShape::pairOverlap
 }
 
 
+void Foam::particleShape::supportKinks
+(
+    DynamicList<vector>& ridgeAxes,
+    DynamicList<vector>& cornerDirections
+) const
+{}
+
+
 bool Foam::particleShape::planeCut
 (
     const vector& n,

@@ -20,6 +20,57 @@ namespace particleShapes
 }
 
 
+namespace
+{
+
+// Gauss-Legendre nodes and weights on [-1, 1], by Newton's method on the
+// Legendre polynomial
+struct gaussLegendre
+{
+    static const Foam::label n = 16;
+    Foam::scalar node[n];
+    Foam::scalar weight[n];
+
+    gaussLegendre()
+    {
+        for (Foam::label i = 0; i < n; ++i)
+        {
+            Foam::scalar x =
+                Foam::cos(Foam::constant::mathematical::pi*(i + 0.75)/(n + 0.5));
+            Foam::scalar derivative = 1;
+            for (int iter = 0; iter < 100; ++iter)
+            {
+                Foam::scalar p0 = 1;
+                Foam::scalar p1 = x;
+                for (Foam::label k = 2; k <= n; ++k)
+                {
+                    const Foam::scalar p2 = ((2*k - 1)*x*p1 - (k - 1)*p0)/k;
+                    p0 = p1;
+                    p1 = p2;
+                }
+                derivative = n*(x*p1 - p0)/(x*x - 1);
+                const Foam::scalar dx = p1/derivative;
+                x -= dx;
+                if (Foam::mag(dx) < 1e-16)
+                {
+                    break;
+                }
+            }
+            node[i] = x;
+            weight[i] = 2/((1 - x*x)*Foam::sqr(derivative));
+        }
+    }
+};
+
+const gaussLegendre& quadrature()
+{
+    static const gaussLegendre rule;
+    return rule;
+}
+
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleShapes::solidCylinder::solidCylinder
@@ -204,9 +255,9 @@ bool Foam::particleShapes::solidCylinder::planeCut
     // the end plane, the chord is 2 c(s), c = sqrt(r^2 - s^2), and the
     // part beyond the plane spans z from zLow(s) to the upper end (the
     // normal turned to point up, z mirrored back at the end). zLow is
-    // -H where the plane passes below the lower end, linear in s where it
-    // crosses the mantle and above H (nothing) elsewhere, so the volume and
-    // its moments are sums of the closed-form integrals of c, s c, s^2 c.
+    // -H where the plane passes below the lower end (closed-form integrals
+    // of c and s c), linear in s where it crosses the mantle and above H
+    // (nothing) elsewhere.
     const scalar r = radius_;
     const scalar H = 0.5*length_;
     const scalar t = Foam::sqrt(sqr(n.x()) + sqr(n.y()));
@@ -230,7 +281,7 @@ bool Foam::particleShapes::solidCylinder::planeCut
         return true;
     }
 
-    // Antiderivatives of c, s c and s^2 c, s clipped to the disk
+    // Antiderivatives of c and s c, s clipped to the disk
     auto integrals = [r](const scalar s0)
     {
         const scalar s = min(max(s0, -r), r);
@@ -240,7 +291,7 @@ bool Foam::particleShapes::solidCylinder::planeCut
         (
             0.5*(s*c + sqr(r)*angle),
             -pow3(c)/3,
-            (s*(2*sqr(s) - sqr(r))*c + pow4(r)*angle)/8
+            0
         );
     };
 
@@ -248,30 +299,52 @@ bool Foam::particleShapes::solidCylinder::planeCut
     scalar Ms = 0;
     scalar Mz = 0;
 
-    if (nz < SMALL)
+    // The plane crosses the mantle over the strip sTop < s < sTop + width
+    const scalar width = nz*length_/t;
+    const scalar sTop = (distance - nz*H)/t;
+    if (width < 1e-6*r)
     {
-        // A plane along the axis: the segment beyond s0, the full length
+        // A plane along the axis, or so nearly that the strip is a step at
+        // its middle s0 (to second order in the strip's width; its
+        // first-order lift of the centroid along the axis kept)
         const scalar s0 = distance/t;
         const vector I(integrals(r) - integrals(s0));
+        const scalar c0 = Foam::sqrt(max(sqr(r) - sqr(s0), scalar(0)));
         volume = 2*length_*I.x();
         Ms = 2*length_*I.y();
-        sectionArea =
-            mag(s0) < r ? 2*length_*Foam::sqrt(sqr(r) - sqr(s0)) : 0;
+        Mz = c0*width*sqr(length_)/6;
+        sectionArea = 2*c0*length_/t;
     }
     else
     {
-        // zLow = (distance - t s)/nz reaches H at sTop, -H at sBottom
-        const scalar sTop = (distance - nz*H)/t;
-        const scalar sBottom = (distance + nz*H)/t;
-
-        // Crossing the mantle: zLow = q0 + q1 s, the height H - zLow
-        const vector I(integrals(sBottom) - integrals(sTop));
-        const scalar q0 = distance/nz;
-        const scalar q1 = -t/nz;
-        volume += 2*((H - q0)*I.x() - q1*I.y());
-        Ms += 2*((H - q0)*I.y() - q1*I.z());
-        Mz += (sqr(H) - sqr(q0))*I.x() - 2*q0*q1*I.y() - sqr(q1)*I.z();
-        sectionArea = 2*I.x()/nz;
+        // Over the strip the height beyond the plane ramps up linearly
+        // from 0 to the length: integrated by Gauss-Legendre in the angle
+        // theta, s = r sin(theta), whose integrands are smooth (closed
+        // forms, divided by nz, lose the precision of a narrow strip)
+        const scalar sBottom = sTop + width;
+        const scalar thetaTop =
+            Foam::asin(min(max(sTop/r, scalar(-1)), scalar(1)));
+        const scalar thetaBottom =
+            Foam::asin(min(max(sBottom/r, scalar(-1)), scalar(1)));
+        const scalar half = 0.5*(thetaBottom - thetaTop);
+        const scalar mid = 0.5*(thetaBottom + thetaTop);
+        const gaussLegendre& rule = quadrature();
+        scalar strip = 0;
+        for (label k = 0; k < gaussLegendre::n; ++k)
+        {
+            const scalar theta = mid + half*rule.node[k];
+            const scalar s = r*Foam::sin(theta);
+            // c ds = r^2 cos^2(theta) dtheta
+            const scalar w = rule.weight[k]*half*sqr(r*Foam::cos(theta));
+            const scalar height =
+                length_*min(max((s - sTop)/width, scalar(0)), scalar(1));
+            strip += w;
+            volume += 2*w*height;
+            Ms += 2*w*s*height;
+            Mz += w*(2*H*height - sqr(height));
+        }
+        // The section over the strip, seen along the normal
+        sectionArea = 2*strip*length_/(t*width);
 
         // Below the lower end: the full length
         const vector J(integrals(r) - integrals(sBottom));
@@ -284,6 +357,18 @@ bool Foam::particleShapes::solidCylinder::planeCut
         centroid = (Ms/volume)*u + vector(0, 0, flip*Mz/volume);
     }
     return true;
+}
+
+
+void Foam::particleShapes::solidCylinder::supportKinks
+(
+    DynamicList<vector>& ridgeAxes,
+    DynamicList<vector>& cornerDirections
+) const
+{
+    ridgeAxes.append(vector(0, 0, 1));
+    cornerDirections.append(vector(0, 0, 1));
+    cornerDirections.append(vector(0, 0, -1));
 }
 
 
