@@ -1,7 +1,8 @@
 """Render a pimpleDLMFoam case with ParaView (run by dlmRender through
 pvbatch): a slice of the flow coloured by the velocity magnitude, the
 particles as their true shapes (spheres of their diameter, disks seen from
-the front in 2D) from the particle VTK series, and the solid fraction's 0.5
+the front in 2D, from the particle VTK series; other shapes from the
+surfaces the solvers write beside it), and the solid fraction's 0.5
 contour on the slice, at chosen written times; optionally one frame per
 written time for an animation.
 
@@ -139,15 +140,20 @@ class Scene:
         outline.AmbientColor = outline.DiffuseColor = [1, 1, 1]
         outline.LineWidth = 2
 
-        if vtk.exists():
+        surfaces = vtk.with_name(f"surfaces_{time_name}.vtk")
+        if surfaces.exists():
+            # Shapes that are not round: their surfaces as written
+            drawn = pv.LegacyVTKReader(FileNames=[str(surfaces)])
+        elif vtk.exists():
             particles = pv.LegacyVTKReader(FileNames=[str(vtk)])
-            glyphs = pv.Glyph(Input=particles, GlyphType="Sphere")
-            glyphs.ScaleArray = ["POINTS", "diameter"]
-            glyphs.ScaleFactor = 1.0
-            glyphs.GlyphMode = "All Points"
-            glyphs.GlyphType.ThetaResolution = 48
-            glyphs.GlyphType.PhiResolution = 24
-            shapes = pv.Show(glyphs, self.view)
+            drawn = pv.Glyph(Input=particles, GlyphType="Sphere")
+            drawn.ScaleArray = ["POINTS", "diameter"]
+            drawn.ScaleFactor = 1.0
+            drawn.GlyphMode = "All Points"
+            drawn.GlyphType.ThetaResolution = 48
+            drawn.GlyphType.PhiResolution = 24
+        if surfaces.exists() or vtk.exists():
+            shapes = pv.Show(drawn, self.view)
             shapes.ColorArrayName = ["POINTS", ""]
             shapes.AmbientColor = shapes.DiffuseColor = self.colour
             shapes.Ambient = 1.0
