@@ -634,6 +634,70 @@ TEST_CASE("convex overlaps: the sphere lens exactly, other pairs against fine-gr
 }
 
 
+TEST_CASE("the grid overlap converges to the common-plane overlap", "[geometry]")
+{
+    // The paper's overlap, max(0, phi_a + phi_b - 1) summed over the cells,
+    // on cubic grids of 4, 8 and 16 cells across the shapes' smallest
+    // dimension, for pairs whose common-plane overlap is exact (aligned
+    // ellipsoids tip to tip, a box's face on a larger face): its error
+    // falls at least as fast as the spacing (measured: 9.0, 3.0, 0.49 %
+    // and 6.7, 3.0, 0.77 %)
+    const convexOverlap convex;
+    const quaternion level(quaternion::I);
+    const std::pair<std::string, std::string> pairs[] =
+    {
+        {"shape ellipsoid; semiAxes (0.6 0.45 0.3);", "shape ellipsoid; semiAxes (0.6 0.45 0.3);"},
+        {"shape box; halfExtents (0.5 0.4 0.3);", "shape box; halfExtents (0.4 0.3 0.3);"}
+    };
+    for (const auto& names : pairs)
+    {
+        autoPtr<particleShape> a(makeShape(names.first));
+        autoPtr<particleShape> b(makeShape(names.second));
+        const point Xa(0.013, 0.021, 0.017);
+        const point Xb(Xa + vector(0, 0, 0.6 - 0.12));
+        const convexOverlap::result o = convex.overlap(a(), Xa, I, b(), Xb, I);
+        REQUIRE(o.depth == Approx(0.12).epsilon(1e-9));
+
+        scalar lastError = GREAT;
+        for (const label perMinor : {4, 8, 16})
+        {
+            const scalar h = 0.6/perMinor;
+            const scalar reach = a->boundingRadius() + h;
+            const label n = label(std::ceil(2*reach/h));
+            const point origin(o.location - reach*vector::one);
+            scalar sum = 0;
+            for (label i = 0; i < n; ++i)
+            {
+                for (label j = 0; j < n; ++j)
+                {
+                    for (label k = 0; k < n; ++k)
+                    {
+                        const point lo(origin + h*vector(i, j, k));
+                        const boundBox bb(lo, lo + h*vector::one);
+                        const scalar phiA = a->boxFraction
+                        (
+                            bb, Xa, I, vector::one, a->boundingRadius()/32
+                        );
+                        const scalar phiB = b->boxFraction
+                        (
+                            bb, Xb, I, vector::one, b->boundingRadius()/32
+                        );
+                        sum += max(phiA + phiB - 1, scalar(0))*bb.volume();
+                    }
+                }
+            }
+            const scalar error = mag(sum - o.volume)/o.volume;
+            INFO(names.first << " and " << names.second << ": " << perMinor
+                << " cells across, grid " << sum << " against " << o.volume
+                << " (" << 100*error << " %)");
+            CHECK(error < 0.6*lastError);
+            lastError = error;
+        }
+        CHECK(lastError < 0.01);
+    }
+}
+
+
 TEST_CASE("non-spherical fractions integrate to the volume", "[geometry]")
 {
     // Cubic cells of 8 and 16 per smallest dimension, fractions subdivided
