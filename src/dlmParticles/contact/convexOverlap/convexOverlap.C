@@ -301,8 +301,10 @@ Foam::convexOverlap::result Foam::convexOverlap::overlap
         o.location = (Va*Ca + Vb*Cb)/o.volume;
     }
     // The smaller section: the two meet where the shapes are smooth; a
-    // face on a larger face touches over the smaller one
-    o.sectionArea = min(areaA, areaB);
+    // face on a larger face touches over the smaller one, the plane then
+    // at the larger face, whose part beyond it may round to nothing
+    o.sectionArea =
+        Va > 0 && Vb > 0 ? min(areaA, areaB) : max(areaA, areaB);
     return o;
 }
 

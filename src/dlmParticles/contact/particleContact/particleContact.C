@@ -387,16 +387,23 @@ Foam::scalar Foam::particleContact::impactStep
             mag(particles[i].velocity0() - particles[j].velocity0())
           + mag(particles[i].velocity() - particles[j].velocity())
           + (mag(accel[i]) + mag(accel[j]))*deltaT;
+        const scalar mass = 1/(inverseMass(i) + inverseMass(j));
         step = min
         (
             step,
             laws_[pairLaws_[k]].contactTime
             (
-                Ri*Rj/(Ri + Rj),
-                1/(inverseMass(i) + inverseMass(j)),
-                max(speed, slowest)
+                Ri*Rj/(Ri + Rj), mass, max(speed, slowest)
             )
         );
+        if (!particles[i].shape().round() || !particles[j].shape().round())
+        {
+            step = min
+            (
+                step,
+                flatContactTime(laws_[pairLaws_[k]], pi*sqr(min(Ri, Rj)), mass)
+            );
+        }
     }
     forAll(wallCandidates_, k)
     {
@@ -404,18 +411,47 @@ Foam::scalar Foam::particleContact::impactStep
         const scalar speed =
             mag(particles[i].velocity0()) + mag(particles[i].velocity())
           + mag(accel[i])*deltaT;
+        const scalar Ri = particles[i].shape().boundingRadius();
         step = min
         (
             step,
             laws_[wallCandidates_[k][2]].contactTime
             (
-                particles[i].shape().boundingRadius(),
-                1/inverseMass(i),
-                max(speed, slowest)
+                Ri, 1/inverseMass(i), max(speed, slowest)
             )
         );
+        if (!particles[i].shape().round())
+        {
+            step = min
+            (
+                step,
+                flatContactTime
+                (
+                    laws_[wallCandidates_[k][2]], pi*sqr(Ri), 1/inverseMass(i)
+                )
+            );
+        }
     }
     return step/stepsPerContact_;
+}
+
+
+Foam::scalar Foam::particleContact::flatContactTime
+(
+    const contactLaw& law,
+    const scalar area,
+    const scalar mass
+)
+{
+    // A face meets a face at once over its area: a stiffness that does not
+    // grow from zero with the depth, so the contact is as short at any
+    // speed, and a body resting down onto a face must not sink into it by
+    // a whole sub-step's fall
+    const scalar depth = 1e-6*Foam::sqrt(area);
+    const scalar V = area*depth;
+    scalar stiffness, damping;
+    law.normalForce(V, depth, sqr(area)/(4*pi*V), mass, 0, stiffness, damping, 1);
+    return pi*Foam::sqrt(mass/max(stiffness, VSMALL));
 }
 
 
@@ -532,7 +568,10 @@ void Foam::particleContact::applyContact
     // a body that it pushes off its centroid (not a sphere's), so that
     // the damping and the sub-step fit the contact's true frequency
     const PtrList<dlmParticle>& particles = cloud_.particles();
-    if (!particles[i].shape().round() || (j >= 0 && !particles[j].shape().round()))
+    const bool offCentre =
+        !particles[i].shape().round()
+     || (j >= 0 && !particles[j].shape().round());
+    if (offCentre)
     {
         const vector ci(ri ^ normal);
         invMass += ci & angularAcceleration(i, orientation_[i], ci);
@@ -588,11 +627,18 @@ void Foam::particleContact::applyContact
         const scalar s = depth/(-approach*hc);
         const vector correction(-(2*s - 1)*damping*approach*normal);
         exitForce_[i] += correction;
-        exitTorque_[i] += ri ^ correction;
         if (j >= 0)
         {
             exitForce_[j] -= correction;
-            exitTorque_[j] -= rj ^ correction;
+        }
+        // Along the normal: a torque off a round shape's centre only
+        if (offCentre)
+        {
+            exitTorque_[i] += ri ^ correction;
+            if (j >= 0)
+            {
+                exitTorque_[j] -= rj ^ correction;
+            }
         }
     }
     if (hc > 0 && approach > 0 && depth < approach*hc && Fn > 0)
@@ -603,11 +649,17 @@ void Foam::particleContact::applyContact
             -(2*s - 1)*min(damping*approach, Fn)*normal
         );
         onsetForce_[i] += correction;
-        onsetTorque_[i] += ri ^ correction;
         if (j >= 0)
         {
             onsetForce_[j] -= correction;
-            onsetTorque_[j] -= rj ^ correction;
+        }
+        if (offCentre)
+        {
+            onsetTorque_[i] += ri ^ correction;
+            if (j >= 0)
+            {
+                onsetTorque_[j] -= rj ^ correction;
+            }
         }
     }
 
