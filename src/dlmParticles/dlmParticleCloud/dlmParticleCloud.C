@@ -393,11 +393,7 @@ void Foam::dlmParticleCloud::checkOverlaps() const
                 depth = o.depth;
                 const vector ni(pi.R().T() & o.normal);
                 const vector nj(pj.R().T() & o.normal);
-                smaller = min
-                (
-                    pi.shape().support(ni) + pi.shape().support(-ni),
-                    pj.shape().support(nj) + pj.shape().support(-nj)
-                );
+                smaller = min(pi.shape().thickness(ni), pj.shape().thickness(nj));
             }
             const word size
             (

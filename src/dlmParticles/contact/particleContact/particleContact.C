@@ -1320,8 +1320,7 @@ void Foam::particleContact::checkWalls() const
                 // diameter of a round shape)
                 const vector n(p.R().T() & -c.normal);
                 const scalar depth = p.shape().support(n) - c.distance;
-                const scalar thickness =
-                    p.shape().support(n) + p.shape().support(-n);
+                const scalar thickness = p.shape().thickness(n);
                 if (c.distance < 0 || depth > maxStartOverlap_*thickness)
                 {
                     FatalIOErrorInFunction(dict_)

@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidCylinder.H"
+#include "vector2D.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -287,12 +288,7 @@ bool Foam::particleShapes::solidCylinder::planeCut
         const scalar s = min(max(s0, -r), r);
         const scalar c = Foam::sqrt(max(sqr(r) - sqr(s), scalar(0)));
         const scalar angle = Foam::asin(s/r);
-        return vector
-        (
-            0.5*(s*c + sqr(r)*angle),
-            -pow3(c)/3,
-            0
-        );
+        return vector2D(0.5*(s*c + sqr(r)*angle), -pow3(c)/3);
     };
 
     const vector u(n.x()/t, n.y()/t, 0);
@@ -308,7 +304,7 @@ bool Foam::particleShapes::solidCylinder::planeCut
         // its middle s0 (to second order in the strip's width; its
         // first-order lift of the centroid along the axis kept)
         const scalar s0 = distance/t;
-        const vector I(integrals(r) - integrals(s0));
+        const vector2D I(integrals(r) - integrals(s0));
         const scalar c0 = Foam::sqrt(max(sqr(r) - sqr(s0), scalar(0)));
         volume = 2*length_*I.x();
         Ms = 2*length_*I.y();
@@ -347,7 +343,7 @@ bool Foam::particleShapes::solidCylinder::planeCut
         sectionArea = 2*strip*length_/(t*width);
 
         // Below the lower end: the full length
-        const vector J(integrals(r) - integrals(sBottom));
+        const vector2D J(integrals(r) - integrals(sBottom));
         volume += 2*length_*J.x();
         Ms += 2*length_*J.y();
     }
