@@ -265,7 +265,7 @@ BAD_INPUT = [
         "Wall funnel: cannot read the surface file", "funnel.stl", "while reading vertex on line 5",
         "walls.funnel"),
     bad("surface wall scale zero", surface_wall(TRIANGLE, " scale 0;"),
-        "scale 0 of wall funnel must be positive"),
+        "Wall funnel: scale 0 must be positive"),
     # One cell per processor: no internal face anywhere. The default
     # lubrication range (the largest distance between neighbouring centres)
     # must come from the faces between processors, not stop the run

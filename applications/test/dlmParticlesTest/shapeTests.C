@@ -28,6 +28,7 @@ Description
 using namespace Foam;
 using constant::mathematical::pi;
 using shapeChecks::show;
+using shapeChecks::gridVolume;
 
 namespace
 {
@@ -37,40 +38,6 @@ autoPtr<particleShape> makeShape(const string& entries)
     IStringStream is(entries);
     const dictionary dict(is);
     return particleShape::New(dict);
-}
-
-
-// Sum of fraction times cell volume over a grid of cubes of side h around
-// the shape at X with rotation R, fractions subdivided down to the solver's
-// default leaf size (bounding radius/32)
-scalar gridVolume
-(
-    const particleShape& shape,
-    const point& X,
-    const tensor& R,
-    const scalar h
-)
-{
-    const scalar Rb = shape.boundingRadius();
-    const label n = label(std::ceil(2*Rb/h)) + 2;
-    const point origin(X - (Rb + h)*vector::one);
-
-    scalar sum = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        for (label j = 0; j < n; ++j)
-        {
-            for (label k = 0; k < n; ++k)
-            {
-                const point lo(origin + h*vector(i, j, k));
-                const boundBox bb(lo, lo + h*vector::one);
-                sum +=
-                    shape.boxFraction(bb, X, R, vector::one, Rb/32)
-                   *bb.volume();
-            }
-        }
-    }
-    return sum;
 }
 
 

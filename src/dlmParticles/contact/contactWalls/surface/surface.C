@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "surface.H"
+#include "surfaceFile.H"
 #include "polyMesh.H"
 #include "Time.H"
 #include "EdgeMap.H"
@@ -115,56 +116,17 @@ Foam::contactWalls::surface::surface
 :
     contactWall(dict)
 {
-    fileName file(dict.get<fileName>("file"));
-    file.expand();
-    if (!file.isAbsolute())
-    {
-        file = mesh.time().constantPath()/"triSurface"/file;
-    }
-    if (!isFile(file))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Wall " << name() << ": cannot find the surface file " << file
-            << exit(FatalIOError);
-    }
-    const scalar scale = dict.getOrDefault<scalar>("scale", 1);
-    if (scale <= 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "scale " << scale << " of wall " << name()
-            << " must be positive" << exit(FatalIOError);
-    }
-
-    // The readers' own errors name neither the file nor the wall (a corrupt
-    // STL: "while reading vertex on line 5"): catch them and say both
-    autoPtr<triSurface> surf;
-    const bool throwing = FatalError.throwExceptions();
-    const bool throwingIO = FatalIOError.throwExceptions();
-    try
-    {
-        surf.reset(new triSurface(file, scale));
-    }
-    catch (const Foam::error& err)
-    {
-        FatalError.throwExceptions(throwing);
-        FatalIOError.throwExceptions(throwingIO);
-        FatalIOErrorInFunction(dict)
-            << "Wall " << name() << ": cannot read the surface file " << file
-            << nl << "    " << err.message().c_str() << exit(FatalIOError);
-    }
-    FatalError.throwExceptions(throwing);
-    FatalIOError.throwExceptions(throwingIO);
-
-    if (surf->empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Wall " << name() << ": the surface file " << file
-            << " holds no faces" << exit(FatalIOError);
-    }
-
-    setSurface(std::move(surf));
+    setSurface
+    (
+        surfaceFile::read
+        (
+            dict,
+            mesh.time().constantPath()/"triSurface",
+            "Wall " + name()
+        )
+    );
     Info<< "Contact wall " << name() << ": " << surface_->size()
-        << " faces from " << file << endl;
+        << " faces from " << dict.get<fileName>("file") << endl;
 }
 
 

@@ -61,6 +61,18 @@ Foam::overlapMethods::exact::exact
             ++counts[seen];
         }
     }
+    // The common-plane construction takes both shapes convex
+    forAll(particles, i)
+    {
+        if (particles.size() > 1 && !particles[i].shape().convex())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Particle " << particles[i].name() << " ("
+                << particles[i].shape().type() << ") is not convex: the"
+                << " exact overlap between particles takes convex shapes."
+                << " Use 'overlap grid'" << exit(FatalIOError);
+        }
+    }
     forAll(representatives, a)
     {
         forAll(representatives, b)
