@@ -171,3 +171,33 @@ def test_non_convex_surfaces_need_the_grid_overlap(tmp_path, foam_env):
     assert left[-1, 4] < 0.5*0.99
     momentum = left[:, 4:7] + right[:, 4:7]
     assert np.abs(momentum).max() < 1e-12
+
+
+def test_surface_particle_restarts_in_parallel_as_never_stopped(tmp_path, foam_env):
+    """The box's surface settling in the liquid on 2 ranks (each reads the
+    surface from the case's constant/triSurface), stopped at a written
+    time and restarted from the processor directories: it continues as the
+    uninterrupted run, to round-off."""
+    def make(name, end_time):
+        case = Case.copy(SPHERE_BOX, tmp_path / name, foam_env)
+        case.run("blockMesh")
+        surface = surface_and_box(case, "(0.015 0.015 0.025)", {})[1]
+        set_particles(case, {"body": surface})
+        case.set("system/controlDict", "endTime", end_time)
+        case.set("system/controlDict", "writeInterval", 5)
+        case.run("decomposePar")
+        return case
+
+    full = make("full", 0.05)
+    full.run("pimpleDLMFoam", np=2)
+    stopped = make("stopped", 0.025)
+    stopped.run("pimpleDLMFoam", np=2)
+    stopped.set("system/controlDict", "endTime", 0.05)
+    stopped.run("pimpleDLMFoam", np=2, log="pimpleDLMFoam.restart")
+
+    a = full.history()["body"]
+    b = stopped.history("0.025")["body"]
+    tail = a[a[:, 0] > 0.025 + 1e-9]
+    assert len(b) == len(tail) == 5
+    assert np.abs(b[:, 1:10] - tail[:, 1:10]).max() < 1e-12
+    assert np.abs(b[:, -4:] - tail[:, -4:]).max() < 1e-12
