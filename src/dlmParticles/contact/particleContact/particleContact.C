@@ -849,6 +849,7 @@ void Foam::particleContact::evaluate(const scalar h)
     }
 
     DynamicList<wallContact> found;
+    DynamicList<wallContact> shapePlanes;
     forAll(wallCandidates_, k)
     {
         const label i = wallCandidates_[k][0];
@@ -881,7 +882,15 @@ void Foam::particleContact::evaluate(const scalar h)
         {
             if (!shape.round())
             {
-                applyShapeWallContact(i, law, spring, c, h);
+                shapePlanes.clear();
+                walls_[w].shapeContacts
+                (
+                    shape, position_[i], orientation_[i].R(), c, shapePlanes
+                );
+                for (const wallContact& plane : shapePlanes)
+                {
+                    applyShapeWallContact(i, law, spring, plane, h);
+                }
                 continue;
             }
             if (lubricationViscosity_ > 0 && walls_[w].lubricated())

@@ -87,4 +87,35 @@ void Foam::contactWalls::cone::nearest
 }
 
 
+void Foam::contactWalls::cone::shapeContacts
+(
+    const particleShape& shape,
+    const point& X,
+    const tensor& R,
+    const wallContact& c,
+    DynamicList<wallContact>& planes
+) const
+{
+    // Inside the lateral surface between the two circles: the concave side
+    const vector r(X - point1_);
+    const scalar a = r & axis_;
+    const scalar rho = mag(r - a*axis_);
+    if
+    (
+        a > 0 && a < length_
+     && rho < radius1_ + (radius2_ - radius1_)*a/length_
+    )
+    {
+        revolutionContacts
+        (
+            shape, X, R, point1_, axis_, length_, radius1_, radius2_, planes
+        );
+    }
+    else
+    {
+        planes.append(c);
+    }
+}
+
+
 // ************************************************************************* //

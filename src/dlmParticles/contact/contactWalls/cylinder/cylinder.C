@@ -69,4 +69,29 @@ void Foam::contactWalls::cylinder::nearest
 }
 
 
+void Foam::contactWalls::cylinder::shapeContacts
+(
+    const particleShape& shape,
+    const point& X,
+    const tensor& R,
+    const wallContact& c,
+    DynamicList<wallContact>& planes
+) const
+{
+    const vector r(X - point_);
+    const vector radial(r - (r & axis_)*axis_);
+    if (mag(radial) < radius_)
+    {
+        revolutionContacts
+        (
+            shape, X, R, point_, axis_, radius_, radius_, radius_, planes
+        );
+    }
+    else
+    {
+        planes.append(c);
+    }
+}
+
+
 // ************************************************************************* //
