@@ -85,6 +85,27 @@ void Foam::overlapMethods::grid::prepare(const UList<labelPair>& pairs)
 }
 
 
+Foam::vector Foam::overlapMethods::grid::surfaceNormal
+(
+    const particleShape& a,
+    const point& Xa,
+    const tensor& Ra,
+    const particleShape& b,
+    const point& Xb,
+    const tensor& Rb,
+    const point& location,
+    const vector& fallback
+)
+{
+    vector na, nb;
+    a.signedDistance(Ra.T() & (location - Xa), na);
+    b.signedDistance(Rb.T() & (location - Xb), nb);
+    const vector n((Ra & na) - (Rb & nb));
+    const scalar magN = mag(n);
+    return magN > 1e-6 ? n/magN : fallback;
+}
+
+
 void Foam::overlapMethods::grid::overlaps
 (
     const UList<labelPair>& pairs,
@@ -160,6 +181,24 @@ void Foam::overlapMethods::grid::overlaps
         if (nDims == 2)
         {
             o.location.z() = positions[i].z();
+        }
+        if
+        (
+            sums[4*b] > 0
+         && !(particles[i].shape().round() && particles[j].shape().round())
+        )
+        {
+            o.normal = surfaceNormal
+            (
+                particles[i].shape(), positions[i], orientations[i].R(),
+                particles[j].shape(), positions[j], orientations[j].R(),
+                o.location, o.normal
+            );
+            if (nDims == 2)
+            {
+                o.normal.z() = 0;
+                o.normal = normalised(o.normal);
+            }
         }
     }
 }
