@@ -153,6 +153,22 @@ BAD_INPUT = [
         "particleProperties.particles.sphere"),
     bad("sphere on a 2D mesh", particles("ball { shape sphere; radius 0.01; density 2500; position (0.1 0.3 0); }"),
         "Particle ball", "3D but the mesh is 2D", source="fallingDisk"),
+    bad("ellipse semi-axis negative", particles("egg { shape ellipse; semiAxes (0.01 -0.005); density 2500; position (0.1 0.3 0); }"),
+        "semiAxes (0.01 -0.005) of particle egg must both be positive", "particleProperties", source="fallingDisk"),
+    bad("polygon crossing itself", particles("tie { shape polygon; vertices ((0 0) (0.02 0.02) (0.02 0) (0 0.01));"
+                                             " density 2500; position (0.1 0.3 0); }"),
+        "vertices of particle tie", "intersects itself: edge 0-1 meets edge 2-3", "particleProperties",
+        source="fallingDisk"),
+    bad("polygon of two vertices", particles("stick { shape polygon; vertices ((0 0) (0.02 0));"
+                                             " density 2500; position (0.1 0.3 0); }"),
+        "vertices of particle stick", "at least 3 vertices, 2 given", source="fallingDisk"),
+    bad("non-convex polygon in exact pair contacts",
+        particles("ell { shape polygon; vertices ((0 0) (0.02 0) (0.02 0.01) (0.01 0.01) (0.01 0.02) (0 0.02));"
+                  " density 2500; position (0.05 0.3 0); }"
+                  " egg { shape ellipse; semiAxes (0.01 0.005); density 2500; position (0.15 0.3 0); }",
+                  "contact { " + BOTH_PAIRS + " }"),
+        "Particle ell (polygon) is not convex", "exact overlap between particles needs convex shapes",
+        "overlap grid", source="fallingDisk"),
     bad("disk on a 3D mesh", particles("coin { " + GOOD.replace("sphere;", "disk;") + " }"),
         "Particle coin", "2D but the mesh is 3D"),
     bad("sphere under-resolved", particles("sphere { " + GOOD.replace("0.005;", "0.000667;") + " }"),

@@ -239,7 +239,8 @@ void Foam::dlmParticleCloud::checkParticles()
                     << p.shape().type() << ", whose contacts with walls are"
                     << " not implemented (no formula for its part beyond a"
                     << " plane). Use 'active false' in the contact settings,"
-                    << " or an ellipsoid, cylinder, box or triSurface."
+                    << " or an ellipsoid, cylinder, box or triSurface (in 2D"
+                    << " an ellipse or polygon)."
                     << exit(FatalIOError);
             }
         }

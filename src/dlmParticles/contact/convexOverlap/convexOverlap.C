@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "convexOverlap.H"
+#include <functional>
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -131,133 +132,177 @@ Foam::convexOverlap::result Foam::convexOverlap::overlap
             }
         }
     };
-    for (const vector& e : directions_)
-    {
-        tryDirection(e);
-    }
     for (const vector& c : corners)
     {
         tryDirection(c);
     }
-    forAll(ridges, k)
-    {
-        // Where two ridges cross (a face's normal, the normal across two
-        // edges), and the ridge's point nearest the centre line
-        for (label l = k + 1; l < ridges.size(); ++l)
-        {
-            const vector cross(ridges[k] ^ ridges[l]);
-            const scalar magCross = mag(cross);
-            if (magCross > 1e-6)
-            {
-                tryDirection(cross/magCross);
-                tryDirection(-cross/magCross);
-            }
-        }
-        const vector onRidge(d - (d & ridges[k])*ridges[k]);
-        if (mag(onRidge) > 1e-6*magD)
-        {
-            tryDirection(onRidge/mag(onRidge));
-        }
-    }
 
-    // Pattern search on the sphere: eight neighbours at angle step in the
-    // tangent plane, moving to the best, halving the step when none is
-    // better; then along each ridge near the point found (where the
-    // pattern search stalls: the depth rises steeply off the ridge), by
-    // golden sections, until neither improves
+    // Golden sections for the least of f over [lo, hi]
     const scalar tolerance = 1e-9;
-    for (label round = 0; round < 4 && least > 0; ++round)
+    auto goldenSection = [tolerance]
+    (
+        const std::function<scalar(scalar)>& f,
+        scalar lo,
+        scalar hi
+    )
     {
-        scalar step = spacing_;
-        while (least > 0 && step > tolerance)
+        const scalar golden = 0.5*(Foam::sqrt(scalar(5)) - 1);
+        scalar x1 = hi - golden*(hi - lo);
+        scalar x2 = lo + golden*(hi - lo);
+        scalar f1 = f(x1);
+        scalar f2 = f(x2);
+        while (hi - lo > tolerance)
         {
-            vector t1(n ^ vector(1, 0, 0));
-            if (magSqr(t1) < 0.1)
+            if (f1 < f2)
             {
-                t1 = n ^ vector(0, 1, 0);
-            }
-            t1 /= mag(t1);
-            const vector t2(n ^ t1);
-            bool moved = false;
-            vector best(n);
-            for (label k = 0; k < 8; ++k)
-            {
-                const scalar angle = constant::mathematical::pi*k/4;
-                const vector e
-                (
-                    cos(step)*n + sin(step)*(cos(angle)*t1 + sin(angle)*t2)
-                );
-                const scalar candidate = delta(e);
-                if (candidate < least)
-                {
-                    least = candidate;
-                    best = e;
-                    moved = true;
-                }
-            }
-            if (moved)
-            {
-                n = best/mag(best);
+                hi = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = hi - golden*(hi - lo);
+                f1 = f(x1);
             }
             else
             {
-                step *= 0.5;
+                lo = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = lo + golden*(hi - lo);
+                f2 = f(x2);
+            }
+        }
+        return 0.5*(lo + hi);
+    };
+
+    if (a.nDimensions() == 2 && b.nDimensions() == 2)
+    {
+        // Prisms along z: the directions of the mesh plane only (towards z
+        // their supports vanish, and the depth with them). A circle of
+        // directions and the kinks (edge normals), then golden sections
+        // about the least found
+        const label nAngles = 360;
+        const scalar spacing = constant::mathematical::twoPi/nAngles;
+        for (label k = 0; k < nAngles; ++k)
+        {
+            tryDirection(vector(cos(k*spacing), sin(k*spacing), 0));
+        }
+        const scalar theta0 = atan2(n.y(), n.x());
+        auto inPlane = [theta0](const scalar phi)
+        {
+            return vector(cos(theta0 + phi), sin(theta0 + phi), 0);
+        };
+        const scalar phi = goldenSection
+        (
+            [&](const scalar phi) { return delta(inPlane(phi)); },
+            -spacing,
+            spacing
+        );
+        const scalar candidate = delta(inPlane(phi));
+        if (candidate < least)
+        {
+            least = candidate;
+            n = inPlane(phi);
+        }
+    }
+    else
+    {
+        for (const vector& e : directions_)
+        {
+            tryDirection(e);
+        }
+        forAll(ridges, k)
+        {
+            // Where two ridges cross (a face's normal, the normal across
+            // two edges), and the ridge's point nearest the centre line
+            for (label l = k + 1; l < ridges.size(); ++l)
+            {
+                const vector cross(ridges[k] ^ ridges[l]);
+                const scalar magCross = mag(cross);
+                if (magCross > 1e-6)
+                {
+                    tryDirection(cross/magCross);
+                    tryDirection(-cross/magCross);
+                }
+            }
+            const vector onRidge(d - (d & ridges[k])*ridges[k]);
+            if (mag(onRidge) > 1e-6*magD)
+            {
+                tryDirection(onRidge/mag(onRidge));
             }
         }
 
-        bool improved = false;
-        for (const vector& r : ridges)
+        // Pattern search on the sphere: eight neighbours at angle step in
+        // the tangent plane, moving to the best, halving the step when
+        // none is better; then along each ridge near the point found
+        // (where the pattern search stalls: the depth rises steeply off
+        // the ridge), by golden sections, until neither improves
+        for (label round = 0; round < 4 && least > 0; ++round)
         {
-            vector m(n - (n & r)*r);
-            const scalar magM = mag(m);
-            if (magM < 1e-9 || mag(n & r) > Foam::sin(spacing_))
+            scalar step = spacing_;
+            while (least > 0 && step > tolerance)
             {
-                continue;
-            }
-            m /= magM;
-            const vector t(r ^ m);
-            auto along = [&](const scalar phi)
-            {
-                return delta(cos(phi)*m + sin(phi)*t);
-            };
-            const scalar golden = 0.5*(Foam::sqrt(scalar(5)) - 1);
-            scalar lo = -spacing_;
-            scalar hi = spacing_;
-            scalar x1 = hi - golden*(hi - lo);
-            scalar x2 = lo + golden*(hi - lo);
-            scalar f1 = along(x1);
-            scalar f2 = along(x2);
-            while (hi - lo > tolerance)
-            {
-                if (f1 < f2)
+                vector t1(n ^ vector(1, 0, 0));
+                if (magSqr(t1) < 0.1)
                 {
-                    hi = x2;
-                    x2 = x1;
-                    f2 = f1;
-                    x1 = hi - golden*(hi - lo);
-                    f1 = along(x1);
+                    t1 = n ^ vector(0, 1, 0);
+                }
+                t1 /= mag(t1);
+                const vector t2(n ^ t1);
+                bool moved = false;
+                vector best(n);
+                for (label k = 0; k < 8; ++k)
+                {
+                    const scalar angle = constant::mathematical::pi*k/4;
+                    const vector e
+                    (
+                        cos(step)*n
+                      + sin(step)*(cos(angle)*t1 + sin(angle)*t2)
+                    );
+                    const scalar candidate = delta(e);
+                    if (candidate < least)
+                    {
+                        least = candidate;
+                        best = e;
+                        moved = true;
+                    }
+                }
+                if (moved)
+                {
+                    n = best/mag(best);
                 }
                 else
                 {
-                    lo = x1;
-                    x1 = x2;
-                    f1 = f2;
-                    x2 = lo + golden*(hi - lo);
-                    f2 = along(x2);
+                    step *= 0.5;
                 }
             }
-            const scalar phi = 0.5*(lo + hi);
-            const scalar candidate = along(phi);
-            if (candidate < least*(1 - 1e-12))
+
+            bool improved = false;
+            for (const vector& r : ridges)
             {
-                least = candidate;
-                n = cos(phi)*m + sin(phi)*t;
-                improved = true;
+                vector m(n - (n & r)*r);
+                const scalar magM = mag(m);
+                if (magM < 1e-9 || mag(n & r) > Foam::sin(spacing_))
+                {
+                    continue;
+                }
+                m /= magM;
+                const vector t(r ^ m);
+                auto along = [&](const scalar phi)
+                {
+                    return delta(cos(phi)*m + sin(phi)*t);
+                };
+                const scalar phi = goldenSection(along, -spacing_, spacing_);
+                const scalar candidate = along(phi);
+                if (candidate < least*(1 - 1e-12))
+                {
+                    least = candidate;
+                    n = cos(phi)*m + sin(phi)*t;
+                    improved = true;
+                }
             }
-        }
-        if (!improved)
-        {
-            break;
+            if (!improved)
+            {
+                break;
+            }
         }
     }
 

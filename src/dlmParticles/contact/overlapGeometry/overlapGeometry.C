@@ -95,4 +95,20 @@ Foam::scalar Foam::overlapGeometry::lensPlaneDistance
 }
 
 
+Foam::scalar Foam::overlapGeometry::equivalentRadius
+(
+    const scalar sectionArea,
+    const scalar volume,
+    const label nDimensions
+)
+{
+    // Sphere: V = pi R delta^2, A = 2 pi R delta; disk: V = 4/3 sqrt(2R)
+    // delta^1.5, c = 2 sqrt(2 R delta)
+    return
+        nDimensions == 3
+      ? sqr(sectionArea)/(4*pi*volume)
+      : pow3(sectionArea)/(12*volume);
+}
+
+
 // ************************************************************************* //

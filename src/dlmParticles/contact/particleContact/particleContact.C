@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleContact.H"
+#include "overlapGeometry.H"
 #include "dlmParticleCloud.H"
 #include "mathematicalConstants.H"
 #include "HashSet.H"
@@ -736,14 +737,14 @@ void Foam::particleContact::applyShapeWallContact
 
     // The force acts at the overlap's centroid; its stiffness is the law's
     // for the section's area (dV/ddelta), as for the round shapes' lens of
-    // curvature radius area^2/(4 pi V), and its damping gives the
+    // the equivalent curvature radius, and its damping gives the
     // restitution for the exponent with which the overlap grows (1 on a
     // face, 2 on a smooth point, 3 on a corner)
     applyContact
     (
         i, -1, law, spring(c), V, depth,
         position_[i] + (R & centroid), -c.normal, h,
-        sqr(area)/(4*pi*V),
+        overlapGeometry::equivalentRadius(area, V, cloud_.twoD() ? 2 : 3),
         min(max(area*depth/V, scalar(1)), scalar(3))
     );
 }

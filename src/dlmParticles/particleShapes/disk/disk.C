@@ -147,6 +147,40 @@ Foam::scalar Foam::particleShapes::disk::planeOverlap
 }
 
 
+bool Foam::particleShapes::disk::planeCut
+(
+    const vector& n,
+    const scalar distance,
+    scalar& volume,
+    vector& centroid,
+    scalar& sectionArea
+) const
+{
+    centroid = Zero;
+    sectionArea = 0;
+    vector m;
+    scalar lineDistance;
+    if (!meshPlaneLine(n, distance, m, lineDistance))
+    {
+        volume = distance < 0 ? this->volume() : 0;
+        return true;
+    }
+
+    // The segment of depth h: half chord c = sqrt(h (2R - h)), centroid
+    // at 2 c^3/(3 A) from the centre
+    const scalar R = radius_;
+    const scalar h = min(max(R - lineDistance, scalar(0)), 2*R);
+    const scalar halfChord = Foam::sqrt(h*(2*R - h));
+    volume = overlapGeometry::circleSegmentArea(R, h);
+    sectionArea = 2*halfChord;
+    if (volume > 0)
+    {
+        centroid = m*2*pow3(halfChord)/(3*volume);
+    }
+    return true;
+}
+
+
 bool Foam::particleShapes::disk::pairOverlap
 (
     const particleShape& other,

@@ -98,7 +98,10 @@ Foam::scalar Foam::particleShapes::ellipsoid::ellipseDistance
     scalar& x1
 )
 {
-    if (y1 > 0)
+    // Off the major axis by less than round-off: on it (the root of a
+    // coordinate of 1e-16 of its semi-axis is -1 to round-off, where the
+    // closest point divides by zero)
+    if (y1 > 1e-12*e1)
     {
         if (y0 > 0)
         {
@@ -145,11 +148,13 @@ Foam::scalar Foam::particleShapes::ellipsoid::octantDistance
     vector& x
 )
 {
-    if (y.z() > 0)
+    // Coordinates below round-off of their semi-axis are on the symmetry
+    // planes (as in ellipseDistance)
+    if (y.z() > 1e-12*e.z())
     {
-        if (y.y() > 0)
+        if (y.y() > 1e-12*e.y())
         {
-            if (y.x() > 0)
+            if (y.x() > 1e-12*e.x())
             {
                 const scalar z[3] = {y.x()/e.x(), y.y()/e.y(), y.z()/e.z()};
                 const scalar g = sqr(z[0]) + sqr(z[1]) + sqr(z[2]) - 1;
@@ -172,7 +177,7 @@ Foam::scalar Foam::particleShapes::ellipsoid::octantDistance
             x.x() = 0;
             return ellipseDistance(e.y(), e.z(), y.y(), y.z(), x.y(), x.z());
         }
-        if (y.x() > 0)
+        if (y.x() > 1e-12*e.x())
         {
             x.y() = 0;
             return ellipseDistance(e.x(), e.z(), y.x(), y.z(), x.x(), x.z());

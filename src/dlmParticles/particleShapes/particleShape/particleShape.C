@@ -98,6 +98,29 @@ Foam::scalar Foam::particleShape::subBoxFraction
 }
 
 
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+bool Foam::particleShape::meshPlaneLine
+(
+    const vector& n,
+    const scalar distance,
+    vector& lineNormal,
+    scalar& lineDistance
+)
+{
+    const scalar inPlane = Foam::sqrt(sqr(n.x()) + sqr(n.y()));
+    if (inPlane < SMALL)
+    {
+        lineNormal = vector(1, 0, 0);
+        lineDistance = 0;
+        return false;
+    }
+    lineNormal = vector(n.x()/inPlane, n.y()/inPlane, 0);
+    lineDistance = distance/inPlane;
+    return true;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::particleShape::surfaceCrossing

@@ -7,7 +7,7 @@
 #include "exact.H"
 #include "dlmParticleCloud.H"
 #include "addToRunTimeSelectionTable.H"
-#include "mathematicalConstants.H"
+#include "overlapGeometry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -61,18 +61,23 @@ Foam::overlapMethods::exact::exact
             ++counts[seen];
         }
     }
-    // The common-plane construction takes both shapes convex
-    forAll(particles, i)
+    // The common-plane overlap takes the shapes as convex
+    if (particles.size() > 1)
     {
-        if (particles.size() > 1 && !particles[i].shape().convex())
+        forAll(particles, i)
         {
-            FatalIOErrorInFunction(dict)
-                << "Particle " << particles[i].name() << " ("
-                << particles[i].shape().type() << ") is not convex: the"
-                << " exact overlap between particles takes convex shapes."
-                << " Use 'overlap grid'" << exit(FatalIOError);
+            if (!particles[i].shape().convex())
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Particle " << particles[i].name() << " ("
+                    << particles[i].shape().type() << ") is not convex: the"
+                    << " exact overlap between particles needs convex"
+                    << " shapes. Use 'overlap grid', or a convex shape"
+                    << exit(FatalIOError);
+            }
         }
     }
+
     forAll(representatives, a)
     {
         forAll(representatives, b)
@@ -158,8 +163,10 @@ void Foam::overlapMethods::exact::overlaps
                 {
                     o.volume = c.volume;
                     o.location = c.location;
-                    o.curvatureRadius =
-                        sqr(c.sectionArea)/(4*constant::mathematical::pi*c.volume);
+                    o.curvatureRadius = overlapGeometry::equivalentRadius
+                    (
+                        c.sectionArea, c.volume, shapes_[i].nDimensions()
+                    );
                     o.volumeExponent =
                         min(max(c.sectionArea*c.depth/c.volume, scalar(1)), scalar(3));
                 }
