@@ -27,36 +27,11 @@ using namespace Foam;
 using constant::mathematical::pi;
 using shapeChecks::show;
 using shapeChecks::gridVolume;
+using shapeChecks::surfaceDirectory;
+using shapeChecks::writeSurface;
 
 namespace
 {
-
-// Surfaces are written under the directory the tests run in
-fileName surfaceDirectory()
-{
-    const fileName dir(cwd()/"surfaceShapeTests");
-    mkDir(dir);
-    return dir;
-}
-
-
-fileName writeSurface
-(
-    const word& name,
-    const pointField& points,
-    const faceList& faces
-)
-{
-    triFaceList triangles(faces.size());
-    forAll(faces, facei)
-    {
-        triangles[facei] = triFace(faces[facei][0], faces[facei][1], faces[facei][2]);
-    }
-    const fileName file(surfaceDirectory()/name + ".stl");
-    triSurface(triangles, points).write(file);
-    return file;
-}
-
 
 // The triangles of the box of the given half extents centred at offset,
 // facing outwards

@@ -314,27 +314,54 @@ Foam::convexOverlap::result Foam::convexOverlap::overlap
     }
 
     // The common plane at distance s from Xa along n, between a's part at
-    // depth least (s = ha - least) and b's (s = ha): bisection for equal
-    // sections, a's section shrinking and b's growing as s grows
+    // depth least (s = ha - least) and b's (s = ha), where the sections
+    // are equal: a's shrinks and b's grows as s grows. Regula falsi on the
+    // difference with the Illinois halving, a bisection whenever a step
+    // fails to halve the bracket (the sections of faces jump)
     const scalar ha = a.support(Ra.T() & n);
     const scalar along = n & d;
-    scalar low = ha - least;
-    scalar high = ha;
     scalar Va = 0, Vb = 0, areaA = 0, areaB = 0;
     point Ca(Xa), Cb(Xb);
-    for (label iter = 0; iter < 60 && high - low > 1e-12*least; ++iter)
+    auto difference = [&](const scalar s)
     {
-        const scalar s = 0.5*(low + high);
         cut(a, Xa, Ra, n, s, Va, Ca, areaA);
         cut(b, Xb, Rb, -n, along - s, Vb, Cb, areaB);
-        if (areaA > areaB)
+        return areaA - areaB;
+    };
+    scalar low = ha - least;
+    scalar high = ha;
+    scalar gLow = difference(low);
+    scalar gHigh = difference(high);
+    label side = 0;
+    bool bisect = false;
+    for (label iter = 0; iter < 60 && high - low > 1e-12*least; ++iter)
+    {
+        const scalar width = high - low;
+        scalar s = 0.5*(low + high);
+        if (!bisect && gLow > 0 && gHigh < 0)
+        {
+            s = (low*gHigh - high*gLow)/(gHigh - gLow);
+            if (!(s > low && s < high))
+            {
+                s = 0.5*(low + high);
+            }
+        }
+        const scalar g = difference(s);
+        if (g > 0)
         {
             low = s;
+            gLow = g;
+            gHigh *= side == 1 ? 0.5 : 1;
+            side = 1;
         }
         else
         {
             high = s;
+            gHigh = g;
+            gLow *= side == -1 ? 0.5 : 1;
+            side = -1;
         }
+        bisect = high - low > 0.5*width;
     }
     const scalar s = 0.5*(low + high);
     cut(a, Xa, Ra, n, s, Va, Ca, areaA);

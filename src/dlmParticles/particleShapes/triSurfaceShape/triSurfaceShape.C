@@ -283,6 +283,18 @@ Foam::particleShapes::triSurfaceShape::analyse
             appendDistinct(corners, n, true);
         }
     }
+    g.pointNeighbours.setSize(local.size());
+    const labelListList& pointEdges = g.surface.pointEdges();
+    forAll(pointEdges, pointi)
+    {
+        for (const label edgei : pointEdges[pointi])
+        {
+            g.pointNeighbours[pointi].append
+            (
+                bodyEdges[edgei].otherVertex(pointi)
+            );
+        }
+    }
     if (g.convex && corners.size() <= 64 && ridges.size() <= 16)
     {
         g.cornerDirections.transfer(corners);
@@ -302,7 +314,8 @@ Foam::particleShapes::triSurfaceShape::triSurfaceShape(const dictionary& dict)
 :
     file_(dict.get<fileName>("file")),
     scale_(dict.getOrDefault<scalar>("scale", 1)),
-    geometry_(load(dict))
+    geometry_(load(dict)),
+    lastSupport_(0)
 {}
 
 
@@ -385,12 +398,37 @@ Foam::scalar Foam::particleShapes::triSurfaceShape::support
     const vector& u
 ) const
 {
-    const pointField& points = geometry_->surface.points();
-    scalar extent = -GREAT;
-    for (const point& p : points)
+    const geometry& g = *geometry_;
+    const pointField& points = g.surface.localPoints();
+    if (!g.convex)
     {
-        extent = max(extent, p & u);
+        scalar extent = -GREAT;
+        for (const point& p : points)
+        {
+            extent = max(extent, p & u);
+        }
+        return extent;
     }
+
+    // Uphill along the edges from the last search's end
+    label best = lastSupport_;
+    scalar extent = points[best] & u;
+    bool moved = true;
+    while (moved)
+    {
+        moved = false;
+        for (const label nbr : g.pointNeighbours[best])
+        {
+            const scalar reach = points[nbr] & u;
+            if (reach > extent)
+            {
+                extent = reach;
+                best = nbr;
+                moved = true;
+            }
+        }
+    }
+    lastSupport_ = best;
     return extent;
 }
 
