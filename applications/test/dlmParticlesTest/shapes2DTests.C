@@ -492,6 +492,28 @@ TEST_CASE("2D shapes: parts beyond a line against closed forms", "[2D]")
 }
 
 
+TEST_CASE("2D contacts: the equivalent radius of a small cut is the curvature's", "[2D]")
+{
+    // The contact laws' small-overlap relations (dV/ddepth = section)
+    // hold for the radius equivalentRadius gives: a disk's segment and a
+    // sphere's cap of depth 1e-6 R give R to 1e-6, an ellipse's segment
+    // at its major axis' end the curvature radius b^2/a there
+    const scalar R = 0.7;
+    const scalar depth = 1e-6*R;
+    scalar A, chord;
+    vector c;
+    autoPtr<particleShape> disk(makeShape("shape disk; radius 0.7;"));
+    disk->planeCut(vector(0, 1, 0), R - depth, A, c, chord);
+    CHECK(overlapGeometry::equivalentRadius(chord, A, 2) == Approx(R).epsilon(2e-6));
+    autoPtr<particleShape> sphere(makeShape("shape sphere; radius 0.7;"));
+    sphere->planeCut(vector(0, 1, 0), R - depth, A, c, chord);
+    CHECK(overlapGeometry::equivalentRadius(chord, A, 3) == Approx(R).epsilon(2e-6));
+    autoPtr<particleShape> ellipse(makeShape("shape ellipse; semiAxes (0.8 0.3);"));
+    ellipse->planeCut(vector(1, 0, 0), 0.8 - depth, A, c, chord);
+    CHECK(overlapGeometry::equivalentRadius(chord, A, 2) == Approx(0.09/0.8).epsilon(1e-5));
+}
+
+
 TEST_CASE("2D shapes: cuts and supports against sums over a fine grid", "[2D]")
 {
     // Midpoint sums over n^2 points of a grid turned by 0.1234 rad (not
