@@ -362,11 +362,10 @@ TEST_CASE("2D shapes: solid fractions summed over a 2D grid give the area", "[2D
 {
     // Square cells of 8 and 16 per smallest dimension, one cell deep,
     // fractions split in the plane only down to bounding radius/32,
-    // centre at random offsets, turned by 0 and 0.7 rad about z. Measured
-    // relative errors: ellipse 1.4e-4 (aligned) and 1.3e-4 (turned) at
-    // both resolutions (the leaves are as small at both; the tangent
-    // lines of a convex curve add area); polygons below 2e-15 (exact
-    // clipping)
+    // centre at random offsets, turned by 0 and 0.7 rad about z: exact
+    // for both shapes (the ellipse the unit circle in a parallelogram, the
+    // polygon clipped by the cell); the general subdivision gave the
+    // ellipse 1.4e-4 (aligned) and 1.3e-4 (turned) at both resolutions
     struct sample
     {
         string entries;
@@ -375,7 +374,7 @@ TEST_CASE("2D shapes: solid fractions summed over a 2D grid give the area", "[2D
     };
     const List<sample> samples
     ({
-        {"shape ellipse; semiAxes (1 0.4);", 0.8, 3e-4},
+        {"shape ellipse; semiAxes (1 0.4);", 0.8, 1e-12},
         {"shape polygon; vertices ((0 0) (1 0) (0.3 0.7));", 0.7, 1e-12},
         {lShape, 1, 1e-12}
     });
@@ -407,6 +406,39 @@ TEST_CASE("2D shapes: solid fractions summed over a 2D grid give the area", "[2D
             }
         }
     }
+}
+
+
+TEST_CASE("2D shapes: the ellipse's exact cell fractions", "[2D]")
+{
+    // With equal semi-axes, the disk's closed form; otherwise within the
+    // general subdivision's error (leaves of 1/512 of the size: 1e-3 of
+    // a cell cut by the surface)
+    autoPtr<particleShape> round(makeShape("shape ellipse; semiAxes (0.4 0.4);"));
+    autoPtr<particleShape> disk(makeShape("shape disk; radius 0.4;"));
+    autoPtr<particleShape> egg(makeShape("shape ellipse; semiAxes (0.8 0.3);"));
+    Random rnd(29);
+    label nCut = 0;
+    for (label sample = 0; sample < 400; ++sample)
+    {
+        const point lo(1.8*rnd.sample01<scalar>() - 0.9, 1.8*rnd.sample01<scalar>() - 0.9, 0);
+        const scalar h = 0.05 + 0.2*rnd.sample01<scalar>();
+        const boundBox bb(lo, lo + vector(h, 0.7*h, 0.1));
+        const point X(0.01, -0.02, 0.05);
+        const tensor R(turn(6*rnd.sample01<scalar>()));
+        INFO("cell from " << show(bb.min()) << " to " << show(bb.max()));
+        CHECK
+        (
+            round->boxFraction(bb, X, R, vector(1, 1, 0), 0.4/32)
+         == Approx(disk->boxFraction(bb, X, I, vector(1, 1, 0), 0.4/32)).margin(1e-12)
+        );
+        const scalar exact = egg->boxFraction(bb, X, R, vector(1, 1, 0), 0.8/32);
+        const scalar subdivided =
+            egg->particleShape::boxFraction(bb, X, R, vector(1, 1, 0), 0.8/512);
+        CHECK(exact == Approx(subdivided).margin(1e-3));
+        nCut += exact > 0 && exact < 1;
+    }
+    CHECK(nCut > 50);
 }
 
 
