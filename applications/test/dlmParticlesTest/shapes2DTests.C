@@ -362,11 +362,10 @@ TEST_CASE("2D shapes: solid fractions summed over a 2D grid give the area", "[2D
 {
     // Square cells of 8 and 16 per smallest dimension, one cell deep,
     // fractions split in the plane only down to bounding radius/32,
-    // centre at random offsets, turned by 0 and 0.7 rad about z. Measured
-    // relative errors: ellipse 1.4e-4 (aligned) and 1.3e-4 (turned) at
-    // both resolutions (the leaves are as small at both; the tangent
-    // lines of a convex curve add area); polygons below 2e-15 (exact
-    // clipping)
+    // centre at random offsets, turned by 0 and 0.7 rad about z: exact
+    // for both shapes (the ellipse the unit circle in a parallelogram, the
+    // polygon clipped by the cell); the general subdivision gave the
+    // ellipse 1.4e-4 (aligned) and 1.3e-4 (turned) at both resolutions
     struct sample
     {
         string entries;
@@ -375,7 +374,7 @@ TEST_CASE("2D shapes: solid fractions summed over a 2D grid give the area", "[2D
     };
     const List<sample> samples
     ({
-        {"shape ellipse; semiAxes (1 0.4);", 0.8, 3e-4},
+        {"shape ellipse; semiAxes (1 0.4);", 0.8, 1e-12},
         {"shape polygon; vertices ((0 0) (1 0) (0.3 0.7));", 0.7, 1e-12},
         {lShape, 1, 1e-12}
     });
@@ -407,6 +406,39 @@ TEST_CASE("2D shapes: solid fractions summed over a 2D grid give the area", "[2D
             }
         }
     }
+}
+
+
+TEST_CASE("2D shapes: the ellipse's exact cell fractions", "[2D]")
+{
+    // With equal semi-axes, the disk's closed form; otherwise within the
+    // general subdivision's error (leaves of 1/512 of the size: 1e-3 of
+    // a cell cut by the surface)
+    autoPtr<particleShape> round(makeShape("shape ellipse; semiAxes (0.4 0.4);"));
+    autoPtr<particleShape> disk(makeShape("shape disk; radius 0.4;"));
+    autoPtr<particleShape> egg(makeShape("shape ellipse; semiAxes (0.8 0.3);"));
+    Random rnd(29);
+    label nCut = 0;
+    for (label sample = 0; sample < 400; ++sample)
+    {
+        const point lo(1.8*rnd.sample01<scalar>() - 0.9, 1.8*rnd.sample01<scalar>() - 0.9, 0);
+        const scalar h = 0.05 + 0.2*rnd.sample01<scalar>();
+        const boundBox bb(lo, lo + vector(h, 0.7*h, 0.1));
+        const point X(0.01, -0.02, 0.05);
+        const tensor R(turn(6*rnd.sample01<scalar>()));
+        INFO("cell from " << show(bb.min()) << " to " << show(bb.max()));
+        CHECK
+        (
+            round->boxFraction(bb, X, R, vector(1, 1, 0), 0.4/32)
+         == Approx(disk->boxFraction(bb, X, I, vector(1, 1, 0), 0.4/32)).margin(1e-12)
+        );
+        const scalar exact = egg->boxFraction(bb, X, R, vector(1, 1, 0), 0.8/32);
+        const scalar subdivided =
+            egg->particleShape::boxFraction(bb, X, R, vector(1, 1, 0), 0.8/512);
+        CHECK(exact == Approx(subdivided).margin(1e-3));
+        nCut += exact > 0 && exact < 1;
+    }
+    CHECK(nCut > 50);
 }
 
 
@@ -489,6 +521,28 @@ TEST_CASE("2D shapes: parts beyond a line against closed forms", "[2D]")
         CHECK(chord == Approx(3).epsilon(1e-13));
         CHECK(mag(c - (vector(1.5, 0.25, 0) - uCentroid)) < 1e-13);
     }
+}
+
+
+TEST_CASE("2D contacts: the equivalent radius of a small cut is the curvature's", "[2D]")
+{
+    // The contact laws' small-overlap relations (dV/ddepth = section)
+    // hold for the radius equivalentRadius gives: a disk's segment and a
+    // sphere's cap of depth 1e-6 R give R to 1e-6, an ellipse's segment
+    // at its major axis' end the curvature radius b^2/a there
+    const scalar R = 0.7;
+    const scalar depth = 1e-6*R;
+    scalar A, chord;
+    vector c;
+    autoPtr<particleShape> disk(makeShape("shape disk; radius 0.7;"));
+    disk->planeCut(vector(0, 1, 0), R - depth, A, c, chord);
+    CHECK(overlapGeometry::equivalentRadius(chord, A, 2) == Approx(R).epsilon(2e-6));
+    autoPtr<particleShape> sphere(makeShape("shape sphere; radius 0.7;"));
+    sphere->planeCut(vector(0, 1, 0), R - depth, A, c, chord);
+    CHECK(overlapGeometry::equivalentRadius(chord, A, 3) == Approx(R).epsilon(2e-6));
+    autoPtr<particleShape> ellipse(makeShape("shape ellipse; semiAxes (0.8 0.3);"));
+    ellipse->planeCut(vector(1, 0, 0), 0.8 - depth, A, c, chord);
+    CHECK(overlapGeometry::equivalentRadius(chord, A, 2) == Approx(0.09/0.8).epsilon(1e-5));
 }
 
 

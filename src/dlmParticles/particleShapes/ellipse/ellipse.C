@@ -22,6 +22,65 @@ namespace particleShapes
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using Foam::scalar;
+using Foam::vector;
+
+// Signed area of the unit circle about the origin within the triangle from
+// the origin to the edge a-b (positive counter-clockwise): over the edge's
+// pieces inside the circle the triangle, outside it the sector
+scalar unitCircleEdgeArea(const vector& a, const vector& b)
+{
+    const vector d(b - a);
+    const scalar dd = Foam::sqr(d.x()) + Foam::sqr(d.y());
+    scalar cuts[4] = {0, 0, 0, 1};
+    Foam::label nCuts = 1;
+    if (dd > 0)
+    {
+        // |a + t d| = 1: t = (-p -+ sqrt(p^2 - q))
+        const scalar p = (a.x()*d.x() + a.y()*d.y())/dd;
+        const scalar q = (Foam::sqr(a.x()) + Foam::sqr(a.y()) - 1)/dd;
+        const scalar disc = Foam::sqr(p) - q;
+        if (disc > 0)
+        {
+            const scalar root = Foam::sqrt(disc);
+            for (const scalar t : {-p - root, -p + root})
+            {
+                if (t > 0 && t < 1)
+                {
+                    cuts[nCuts++] = t;
+                }
+            }
+        }
+    }
+    cuts[nCuts++] = 1;
+
+    scalar area = 0;
+    for (Foam::label k = 0; k + 1 < nCuts; ++k)
+    {
+        const vector P(a + cuts[k]*d);
+        const vector Q(a + cuts[k + 1]*d);
+        const vector M(0.5*(P + Q));
+        const scalar cross = P.x()*Q.y() - P.y()*Q.x();
+        if (Foam::sqr(M.x()) + Foam::sqr(M.y()) <= 1)
+        {
+            area += 0.5*cross;
+        }
+        else
+        {
+            area += 0.5*Foam::atan2(cross, P.x()*Q.x() + P.y()*Q.y());
+        }
+    }
+    return area;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleShapes::ellipse::ellipse(const vector2D& semiAxes)
@@ -128,6 +187,46 @@ Foam::scalar Foam::particleShapes::ellipse::surfaceCrossing
     const scalar c = (magSqr(u0) - 1)/a;
     const scalar disc = max(sqr(b) - c, scalar(0));
     return min(max(-b - Foam::sqrt(disc), scalar(0)), L);
+}
+
+
+Foam::scalar Foam::particleShapes::ellipse::boxFraction
+(
+    const boundBox& bb,
+    const point& X,
+    const tensor& R,
+    const vector& splitDirections,
+    const scalar leafSize
+) const
+{
+    // The cell's rectangle in the frame u = E^-1 R^T (r - X), where the
+    // ellipse is the unit circle: a parallelogram, counter-clockwise (the
+    // map keeps orientation); areas there scale by 1/(ab)
+    const point& lo = bb.min();
+    const point& hi = bb.max();
+    const point corners[4] =
+    {
+        point(lo.x(), lo.y(), 0), point(hi.x(), lo.y(), 0),
+        point(hi.x(), hi.y(), 0), point(lo.x(), hi.y(), 0)
+    };
+    const point centre(X.x(), X.y(), 0);
+    vector u[4];
+    for (label k = 0; k < 4; ++k)
+    {
+        const vector body(R.T() & (corners[k] - centre));
+        u[k] = vector(body.x()/semiAxes_.x(), body.y()/semiAxes_.y(), 0);
+    }
+    scalar unitArea = 0;
+    for (label k = 0; k < 4; ++k)
+    {
+        unitArea += unitCircleEdgeArea(u[k], u[(k + 1) % 4]);
+    }
+    const scalar cellArea = (hi.x() - lo.x())*(hi.y() - lo.y());
+    return min
+    (
+        max(semiAxes_.x()*semiAxes_.y()*unitArea/cellArea, scalar(0)),
+        scalar(1)
+    );
 }
 
 

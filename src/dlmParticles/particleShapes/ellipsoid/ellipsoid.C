@@ -86,7 +86,7 @@ scalar closestPointRoot
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::particleShapes::ellipsoid::ellipseDistance
 (
