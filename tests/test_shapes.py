@@ -193,6 +193,10 @@ FLAT_SHAPES = {
     # (overlap ~ delta^2), the box with a face (overlap ~ delta)
     "ellipsoid": {"shape": "ellipsoid", "semiAxes": "(0.004 0.003 0.0015)"},
     "box": {"shape": "box", "halfExtents": "(0.004 0.003 0.0015)"},
+    # The same box with rounded edges: on a face, the overlap grows
+    # linearly over its smaller flat part
+    "rounded box": {"shape": "box", "halfExtents": "(0.004 0.003 0.0015)",
+                    "edgeRadius": 0.0005},
     # On an end face (overlap ~ delta), and on its side, axis along x: a
     # line of contact (overlap ~ delta^1.5)
     "cylinder": {"shape": "cylinder", "radius": 0.004, "length": 0.003},

@@ -375,7 +375,8 @@ TEST_CASE("plane cuts and support functions against sums over a fine grid", "[ge
     {
         "shape ellipsoid; semiAxes (1 0.6 0.3);",
         "shape box; halfExtents (0.5 0.3 0.2);",
-        "shape cylinder; radius 0.4; length 0.6;"
+        "shape cylinder; radius 0.4; length 0.6;",
+        "shape box; halfExtents (0.5 0.3 0.2); edgeRadius 0.1;"
     };
     const vector normals[] =
     {
@@ -710,6 +711,7 @@ TEST_CASE("non-spherical fractions integrate to the volume", "[geometry]")
     //   ellipsoid     3.3e-4      3.3e-4
     //   cylinder      3.1e-4      6.1e-4
     //   box           1e-13       3.9e-4   (aligned: exact fraction)
+    //   rounded box   3.3e-4      3.3e-4   (edgeRadius 0.1)
     struct sample
     {
         string entries;
@@ -721,7 +723,8 @@ TEST_CASE("non-spherical fractions integrate to the volume", "[geometry]")
     ({
         {"shape ellipsoid; semiAxes (1 0.6 0.3);", 0.6, 5e-4, 5e-4},
         {"shape cylinder; radius 0.4; length 1.5;", 0.8, 5e-4, 1e-3},
-        {"shape box; halfExtents (0.5 0.3 0.2);", 0.4, 1e-12, 5e-4}
+        {"shape box; halfExtents (0.5 0.3 0.2);", 0.4, 1e-12, 5e-4},
+        {"shape box; halfExtents (0.5 0.3 0.2); edgeRadius 0.1;", 0.4, 5e-4, 5e-4}
     });
     const tensor rotated(quaternion(vector(1, 2, 3)/Foam::sqrt(14.0), 0.7).R());
 
