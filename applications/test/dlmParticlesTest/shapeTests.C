@@ -709,6 +709,8 @@ TEST_CASE("non-spherical fractions integrate to the volume", "[geometry]")
     // the tangent planes of a convex surface add volume):
     //                 aligned     rotated
     //   ellipsoid     3.3e-4      3.3e-4
+    //   ellipsoid 2:1 6.7e-4      6.7e-4   (the shapes of validation/
+    //   ellipsoid 4:1 2.2e-3      2.2e-3    benchmark_shapeFractions.py)
     //   cylinder      3.1e-4      6.1e-4
     //   box           1e-13       3.9e-4   (aligned: exact fraction)
     //   rounded box   3.3e-4      3.3e-4   (edgeRadius 0.1)
@@ -722,6 +724,8 @@ TEST_CASE("non-spherical fractions integrate to the volume", "[geometry]")
     const List<sample> samples
     ({
         {"shape ellipsoid; semiAxes (1 0.6 0.3);", 0.6, 5e-4, 5e-4},
+        {"shape ellipsoid; semiAxes (0.5 0.25 0.25);", 0.5, 1e-3, 1e-3},
+        {"shape ellipsoid; semiAxes (1 0.25 0.25);", 0.5, 3e-3, 3e-3},
         {"shape cylinder; radius 0.4; length 1.5;", 0.8, 5e-4, 1e-3},
         {"shape box; halfExtents (0.5 0.3 0.2);", 0.4, 1e-12, 5e-4},
         {"shape box; halfExtents (0.5 0.3 0.2); edgeRadius 0.1;", 0.4, 5e-4, 5e-4}
