@@ -268,16 +268,17 @@ Foam::scalar Foam::particleShapes::box::roundedSurfaceCrossing
     // The line's parameter interval [tIn, tOut] inside a piece, narrowed
     // by each slab and circle or sphere of the piece
     scalar tIn, tOut;
-    auto slab = [&](const direction d, const scalar centre, const scalar h)
+    // Within h of the centroid along d
+    auto slab = [&](const direction d, const scalar h)
     {
         if (mag(e[d]) > SMALL)
         {
-            const scalar t1 = (centre - h - r0[d])/e[d];
-            const scalar t2 = (centre + h - r0[d])/e[d];
+            const scalar t1 = (-h - r0[d])/e[d];
+            const scalar t2 = (h - r0[d])/e[d];
             tIn = max(tIn, min(t1, t2));
             tOut = min(tOut, max(t1, t2));
         }
-        else if (mag(r0[d] - centre) > h)
+        else if (mag(r0[d]) > h)
         {
             tIn = GREAT;
         }
@@ -323,9 +324,9 @@ Foam::scalar Foam::particleShapes::box::roundedSurfaceCrossing
         // The box reaching the faces normal to d
         tIn = -GREAT;
         tOut = GREAT;
-        slab(d, 0, b[d] + r);
-        slab(i, 0, b[i]);
-        slab(j, 0, b[j]);
+        slab(d, b[d] + r);
+        slab(i, b[i]);
+        slab(j, b[j]);
         enter();
 
         // The cylinders along the edges along d
@@ -340,7 +341,7 @@ Foam::scalar Foam::particleShapes::box::roundedSurfaceCrossing
                 c[j] = sj*b[j];
                 tIn = -GREAT;
                 tOut = GREAT;
-                slab(d, 0, b[d]);
+                slab(d, b[d]);
                 ball(c, mask);
                 enter();
             }
@@ -383,7 +384,7 @@ void Foam::particleShapes::box::roundedPlaneCut
     const scalar r = edgeRadius_;
 
     // Slices across the axis k along which n has its least component (so
-    // that the plane crosses the slices at least 35 degrees from them):
+    // that the plane crosses the slices at 55 degrees or more):
     // at z along k, a rectangle of half extents b_i, b_j grown by rho(z),
     // r over the inner box and shrinking as a circle's chord beyond it,
     // and the plane the line m.(x_i, x_j) = e(z)
