@@ -523,6 +523,10 @@ TEST_CASE("convex overlaps: the sphere lens exactly, other pairs against fine-gr
         const std::string egg("shape ellipsoid; semiAxes (1 0.6 0.3);");
         const std::string brick("shape box; halfExtents (0.5 0.3 0.2);");
         const std::string can("shape cylinder; radius 0.4; length 0.6;");
+        const std::string rounded
+        (
+            "shape box; halfExtents (0.3 0.2 0.2); edgeRadius 0.1;"
+        );
         // The tolerance of the volume (above 1 % of grid error): the
         // construction is exact for the lens of similar, aligned shapes and
         // for a face on a larger face; crossed or tilted shapes it
@@ -530,7 +534,8 @@ TEST_CASE("convex overlaps: the sphere lens exactly, other pairs against fine-gr
         // along the edges where the common part is a corner (measured: 14 %
         // for crossed ellipsoids, 3 % for a tilted ellipsoid on a sphere,
         // a factor 6.6 for a box's edge across another's, 43 % for a
-        // cylinder's rim on a box)
+        // cylinder's rim on a box, 44 % for a rounded box's edge across
+        // another's)
         const pairCase cases[] =
         {
             {egg, egg, level, level, vector(0, 0, 1), 1e-3},
@@ -539,7 +544,9 @@ TEST_CASE("convex overlaps: the sphere lens exactly, other pairs against fine-gr
             {brick, "shape box; halfExtents (0.3 0.2 0.2);", level, level, vector(0, 0, 1), 1e-3},
             {brick, brick, tilted, level, vector(0.2, 0.1, 0.6), 6},
             {can, brick, tilted, level, vector(0.1, 0.3, 0.6), 0.5},
-            {can, can, level, quaternion(vector(1, 0, 0), 0.5*pi), vector(0, 0.1, 1), 0.05}
+            {can, can, level, quaternion(vector(1, 0, 0), 0.5*pi), vector(0, 0.1, 1), 0.05},
+            {brick, rounded, level, level, vector(0, 0, 1), 1e-3},
+            {rounded, rounded, tilted, level, vector(0.2, 0.1, 0.6), 0.5}
         };
         for (const pairCase& c : cases)
         {
