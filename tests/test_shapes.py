@@ -3,13 +3,15 @@ of torque (the intermediate-axis flip, energy and angular momentum kept, the
 orientation in the history and the surfaces in the VTK files), a
 spheroid settling tilted in a viscous liquid (the glide of an anisotropic
 body in Stokes flow), an ellipsoid and a box dropped flat on a floor (the
-rebound at the requested restitution) and a tilted ellipsoid with rolling
-friction settling onto its largest face; in 2D the ellipse and the polygon:
-rebound, rest on a face (convex or not), pair contacts, a resting stack and
-a tilted ellipse gliding in Stokes flow."""
+rebound at the requested restitution), a tilted ellipsoid with rolling
+friction settling onto its largest face, the solid-fraction benchmark's
+utility; in 2D the ellipse and the polygon: rebound, rest on a face (convex
+or not), pair contacts, a resting stack and a tilted ellipse gliding in
+Stokes flow."""
 
 import pathlib
 import re
+import subprocess
 
 import numpy as np
 import pytest
@@ -195,6 +197,10 @@ FLAT_SHAPES = {
     # (overlap ~ delta^2), the box with a face (overlap ~ delta)
     "ellipsoid": {"shape": "ellipsoid", "semiAxes": "(0.004 0.003 0.0015)"},
     "box": {"shape": "box", "halfExtents": "(0.004 0.003 0.0015)"},
+    # The same box with rounded edges: on a face, the overlap grows
+    # linearly over its smaller flat part
+    "rounded box": {"shape": "box", "halfExtents": "(0.004 0.003 0.0015)",
+                    "edgeRadius": 0.0005},
     # On an end face (overlap ~ delta), and on its side, axis along x: a
     # line of contact (overlap ~ delta^1.5)
     "cylinder": {"shape": "cylinder", "radius": 0.004, "length": 0.003},
@@ -681,3 +687,25 @@ def test_2d_stack_of_rectangles_and_an_ellipse_rests_without_jitter(tmp_path, fo
         assert np.abs(body[late, 7:10]).max() < 1e-3, name
         assert abs(body[-1, 2] - heights[name]) < 0.01*thickness[name], name
         assert abs(body[-1, 1] - body[0, 1]) < 1e-8, name
+
+
+def shape_fractions(env, entries, *options):
+    """The dlmShapeFractions utility's results (its last line's pairs)."""
+    out = subprocess.run(["dlmShapeFractions", "-shape", entries, *options],
+                         env=env, capture_output=True, text=True, check=True).stdout
+    last = out.strip().splitlines()[-1].split()
+    return {name: value for name, value in zip(last[0::2], last[1::2])}
+
+
+def test_shape_fractions_utility_sums_the_volume(foam_env):
+    """The benchmark's utility (validation/benchmark_shapeFractions.py)
+    visits every cell the particle touches: an aligned box's exact
+    fractions sum to its volume, a tilted one's within the subdivision's
+    error (5e-4, as in the unit test; and not exactly)."""
+    box = "shape box; halfExtents (0.015625 0.01171875 0.0078125);"
+    aligned = shape_fractions(foam_env, box, "-cells", "4", "-samples", "3",
+                              "-minTime", "0")
+    assert float(aligned["maxMagError"]) < 1e-12
+    tilted = shape_fractions(foam_env, box, "-cells", "4", "-samples", "3",
+                             "-minTime", "0", "-rotate")
+    assert 1e-5 < float(tilted["maxMagError"]) < 5e-4

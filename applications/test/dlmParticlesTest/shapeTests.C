@@ -342,7 +342,8 @@ TEST_CASE("plane cuts and support functions against sums over a fine grid", "[ge
     {
         "shape ellipsoid; semiAxes (1 0.6 0.3);",
         "shape box; halfExtents (0.5 0.3 0.2);",
-        "shape cylinder; radius 0.4; length 0.6;"
+        "shape cylinder; radius 0.4; length 0.6;",
+        "shape box; halfExtents (0.5 0.3 0.2); edgeRadius 0.1;"
     };
     const vector normals[] =
     {
@@ -489,6 +490,10 @@ TEST_CASE("convex overlaps: the sphere lens exactly, other pairs against fine-gr
         const std::string egg("shape ellipsoid; semiAxes (1 0.6 0.3);");
         const std::string brick("shape box; halfExtents (0.5 0.3 0.2);");
         const std::string can("shape cylinder; radius 0.4; length 0.6;");
+        const std::string rounded
+        (
+            "shape box; halfExtents (0.3 0.2 0.2); edgeRadius 0.1;"
+        );
         // The tolerance of the volume (above 1 % of grid error): the
         // construction is exact for the lens of similar, aligned shapes and
         // for a face on a larger face; crossed or tilted shapes it
@@ -496,7 +501,8 @@ TEST_CASE("convex overlaps: the sphere lens exactly, other pairs against fine-gr
         // along the edges where the common part is a corner (measured: 14 %
         // for crossed ellipsoids, 3 % for a tilted ellipsoid on a sphere,
         // a factor 6.6 for a box's edge across another's, 43 % for a
-        // cylinder's rim on a box)
+        // cylinder's rim on a box, 44 % for a rounded box's edge across
+        // another's)
         const pairCase cases[] =
         {
             {egg, egg, level, level, vector(0, 0, 1), 1e-3},
@@ -505,7 +511,9 @@ TEST_CASE("convex overlaps: the sphere lens exactly, other pairs against fine-gr
             {brick, "shape box; halfExtents (0.3 0.2 0.2);", level, level, vector(0, 0, 1), 1e-3},
             {brick, brick, tilted, level, vector(0.2, 0.1, 0.6), 6},
             {can, brick, tilted, level, vector(0.1, 0.3, 0.6), 0.5},
-            {can, can, level, quaternion(vector(1, 0, 0), 0.5*pi), vector(0, 0.1, 1), 0.05}
+            {can, can, level, quaternion(vector(1, 0, 0), 0.5*pi), vector(0, 0.1, 1), 0.05},
+            {brick, rounded, level, level, vector(0, 0, 1), 1e-3},
+            {rounded, rounded, tilted, level, vector(0.2, 0.1, 0.6), 0.5}
         };
         for (const pairCase& c : cases)
         {
@@ -675,8 +683,11 @@ TEST_CASE("non-spherical fractions integrate to the volume", "[geometry]")
     // the tangent planes of a convex surface add volume):
     //                 aligned     rotated
     //   ellipsoid     3.3e-4      3.3e-4
+    //   ellipsoid 2:1 6.7e-4      6.7e-4   (the shapes of validation/
+    //   ellipsoid 4:1 2.2e-3      2.2e-3    benchmark_shapeFractions.py)
     //   cylinder      3.1e-4      6.1e-4
     //   box           1e-13       3.9e-4   (aligned: exact fraction)
+    //   rounded box   3.3e-4      3.3e-4   (edgeRadius 0.1)
     struct sample
     {
         string entries;
@@ -687,8 +698,11 @@ TEST_CASE("non-spherical fractions integrate to the volume", "[geometry]")
     const List<sample> samples
     ({
         {"shape ellipsoid; semiAxes (1 0.6 0.3);", 0.6, 5e-4, 5e-4},
+        {"shape ellipsoid; semiAxes (0.5 0.25 0.25);", 0.5, 1e-3, 1e-3},
+        {"shape ellipsoid; semiAxes (1 0.25 0.25);", 0.5, 3e-3, 3e-3},
         {"shape cylinder; radius 0.4; length 1.5;", 0.8, 5e-4, 1e-3},
-        {"shape box; halfExtents (0.5 0.3 0.2);", 0.4, 1e-12, 5e-4}
+        {"shape box; halfExtents (0.5 0.3 0.2);", 0.4, 1e-12, 5e-4},
+        {"shape box; halfExtents (0.5 0.3 0.2); edgeRadius 0.1;", 0.4, 5e-4, 5e-4}
     });
     const tensor rotated(quaternion(vector(1, 2, 3)/Foam::sqrt(14.0), 0.7).R());
 

@@ -6,6 +6,7 @@
 
 #include "solidCylinder.H"
 #include "vector2D.H"
+#include "gaussLegendre.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -18,57 +19,6 @@ namespace particleShapes
     defineTypeNameAndDebug(solidCylinder, 0);
     addToRunTimeSelectionTable(particleShape, solidCylinder, dictionary);
 }
-}
-
-
-namespace
-{
-
-// Gauss-Legendre nodes and weights on [-1, 1], by Newton's method on the
-// Legendre polynomial
-struct gaussLegendre
-{
-    static const Foam::label n = 16;
-    Foam::scalar node[n];
-    Foam::scalar weight[n];
-
-    gaussLegendre()
-    {
-        for (Foam::label i = 0; i < n; ++i)
-        {
-            Foam::scalar x =
-                Foam::cos(Foam::constant::mathematical::pi*(i + 0.75)/(n + 0.5));
-            Foam::scalar derivative = 1;
-            for (int iter = 0; iter < 100; ++iter)
-            {
-                Foam::scalar p0 = 1;
-                Foam::scalar p1 = x;
-                for (Foam::label k = 2; k <= n; ++k)
-                {
-                    const Foam::scalar p2 = ((2*k - 1)*x*p1 - (k - 1)*p0)/k;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                derivative = n*(x*p1 - p0)/(x*x - 1);
-                const Foam::scalar dx = p1/derivative;
-                x -= dx;
-                if (Foam::mag(dx) < 1e-16)
-                {
-                    break;
-                }
-            }
-            node[i] = x;
-            weight[i] = 2/((1 - x*x)*Foam::sqr(derivative));
-        }
-    }
-};
-
-const gaussLegendre& quadrature()
-{
-    static const gaussLegendre rule;
-    return rule;
-}
-
 }
 
 
@@ -324,14 +274,14 @@ bool Foam::particleShapes::solidCylinder::planeCut
             Foam::asin(min(max(sBottom/r, scalar(-1)), scalar(1)));
         const scalar half = 0.5*(thetaBottom - thetaTop);
         const scalar mid = 0.5*(thetaBottom + thetaTop);
-        const gaussLegendre& rule = quadrature();
+        static const gaussLegendre rule(16);
         scalar strip = 0;
-        for (label k = 0; k < gaussLegendre::n; ++k)
+        forAll(rule.nodes(), k)
         {
-            const scalar theta = mid + half*rule.node[k];
+            const scalar theta = mid + half*rule.nodes()[k];
             const scalar s = r*Foam::sin(theta);
             // c ds = r^2 cos^2(theta) dtheta
-            const scalar w = rule.weight[k]*half*sqr(r*Foam::cos(theta));
+            const scalar w = rule.weights()[k]*half*sqr(r*Foam::cos(theta));
             const scalar height =
                 length_*min(max((s - sTop)/width, scalar(0)), scalar(1));
             strip += w;
