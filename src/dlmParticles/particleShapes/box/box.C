@@ -35,8 +35,13 @@ using namespace Foam;
 
 // The part of a rounded rectangle beyond a line: the rectangle of half
 // extents p, q along x and y grown by rho, the line m.x = e (m unit), the
-// part on m's side. Area and first moments from the boundary integrals
-// (Green) over the kept parts of its sides and arcs and over the chord.
+// part on m's side. Its area, first moments about the origin and the length
+// of the chord, from boundary integrals (Green) over the kept parts of the
+// sides and arcs, in the line's frame: u along the line from its point
+// nearest the origin, v = m.x - e across it. There the chord (v = 0) adds
+// nothing and every term is as small as the part (a sliver of depth 1e-16
+// of the size keeps its relative precision: the contacts' first touch).
+// An arc adds its chord and the circular segment between chord and arc.
 struct sliceCut
 {
     scalar area;
@@ -55,8 +60,7 @@ sliceCut roundedRectangleCut
 {
     sliceCut cut{0, vector2D::zero, 0};
 
-    // Nothing beyond the line, or all (centred: no first moments); a line
-    // along a side, touching it, is then no chord
+    // Nothing beyond the line, or all (centred: no first moments)
     const scalar support = p*mag(m.x()) + q*mag(m.y()) + rho;
     if (e >= support)
     {
@@ -68,38 +72,49 @@ sliceCut roundedRectangleCut
             4*p*q + 4*rho*(p + q) + constant::mathematical::pi*sqr(rho);
         return cut;
     }
-    auto side = [&](const vector2D& x) { return (m & x) - e; };
 
-    // Counter-clockwise pieces: area = 1/2 (x dy - y dx), moments x^2/2 dy
-    // and -y^2/2 dx
+    const vector2D t(m.y(), -m.x());
+    const vector2D x0(e*m);
+    auto frame = [&](const vector2D& x) { return vector2D(t & x, (m & x) - e); };
+
+    // Counter-clockwise pieces (u, v): area -v du, moments -u v du and
+    // -v^2/2 du
+    scalar area = 0;
+    vector2D moment(Zero);
     auto addSegment = [&](const vector2D& a, const vector2D& b)
     {
-        cut.area += 0.5*(a.x()*b.y() - b.x()*a.y());
-        cut.moment.x() +=
-            (b.y() - a.y())*(sqr(a.x()) + a.x()*b.x() + sqr(b.x()))/6;
-        cut.moment.y() -=
-            (b.x() - a.x())*(sqr(a.y()) + a.y()*b.y() + sqr(b.y()))/6;
+        const scalar du = b.x() - a.x();
+        area -= 0.5*(a.y() + b.y())*du;
+        moment.x() -=
+            du*(2*a.x()*a.y() + a.x()*b.y() + b.x()*a.y() + 2*b.x()*b.y())/6;
+        moment.y() -= du*(sqr(a.y()) + a.y()*b.y() + sqr(b.y()))/6;
     };
+    // The arc about c (x, y frame) from angle ta to tb: its chord and the
+    // segment beyond it (area rho^2 (w - sin w)/2, w = tb - ta; first
+    // moment about c 2/3 rho^3 sin^3(w/2) along the bisector)
     auto addArc = [&](const vector2D& c, const scalar ta, const scalar tb)
     {
-        const scalar ca = Foam::cos(ta), sa = Foam::sin(ta);
-        const scalar cb = Foam::cos(tb), sb = Foam::sin(tb);
-        const scalar dt = tb - ta;
-        cut.area +=
-            0.5*(sqr(rho)*dt + rho*c.x()*(sb - sa) - rho*c.y()*(cb - ca));
-        // Integrals of cos^2, cos^3, sin^2 and sin^3 over [ta, tb]
-        const scalar cos2 = 0.5*dt + 0.25*(Foam::sin(2*tb) - Foam::sin(2*ta));
-        const scalar sin2 = 0.5*dt - 0.25*(Foam::sin(2*tb) - Foam::sin(2*ta));
-        const scalar cos3 = (sb - pow3(sb)/3) - (sa - pow3(sa)/3);
-        const scalar sin3 = (pow3(cb)/3 - cb) - (pow3(ca)/3 - ca);
-        cut.moment.x() += 0.5*rho*
+        addSegment
         (
-            sqr(c.x())*(sb - sa) + 2*c.x()*rho*cos2 + sqr(rho)*cos3
+            frame(c + rho*vector2D(Foam::cos(ta), Foam::sin(ta))),
+            frame(c + rho*vector2D(Foam::cos(tb), Foam::sin(tb)))
         );
-        cut.moment.y() += 0.5*rho*
+        const scalar w = tb - ta;
+        const scalar wLessSin =
+            w < 1e-3
+          ? pow3(w)/6*(1 - sqr(w)/20*(1 - sqr(w)/42))
+          : w - Foam::sin(w);
+        const scalar segment = 0.5*sqr(rho)*wLessSin;
+        const scalar bisector = 0.5*(ta + tb);
+        const vector2D cuv(frame(c));
+        const vector2D along
         (
-            sqr(c.y())*(ca - cb) + 2*c.y()*rho*sin2 + sqr(rho)*sin3
+            frame(c + vector2D(Foam::cos(bisector), Foam::sin(bisector)))
+          - cuv
         );
+        area += segment;
+        moment +=
+            segment*cuv + 2.0/3.0*pow3(rho*Foam::sin(0.5*w))*along;
     };
 
     // The sides, each followed by the arc about the corner it leads to
@@ -110,35 +125,37 @@ sliceCut roundedRectangleCut
     const scalar angleM = Foam::atan2(m.y(), m.x());
     for (label k = 0; k < 4; ++k)
     {
-        const vector2D a(corners[(k + 3) % 4] + rho*outward[k]);
-        const vector2D b(corners[k] + rho*outward[k]);
-        const scalar sa = side(a);
-        const scalar sb = side(b);
-        if (sa >= 0 && sb >= 0)
+        const vector2D a(frame(corners[(k + 3) % 4] + rho*outward[k]));
+        const vector2D b(frame(corners[k] + rho*outward[k]));
+        if (a.y() >= 0 && b.y() >= 0)
         {
             addSegment(a, b);
         }
-        else if (sa >= 0)
+        else if (a.y() >= 0)
         {
-            addSegment(a, a + sa/(sa - sb)*(b - a));
+            addSegment(a, a + a.y()/(a.y() - b.y())*(b - a));
         }
-        else if (sb >= 0)
+        else if (b.y() >= 0)
         {
-            addSegment(a + sa/(sa - sb)*(b - a), b);
+            addSegment(a + a.y()/(a.y() - b.y())*(b - a), b);
         }
 
         // The arc from angle k pi/2 to (k + 1) pi/2 about corner k: kept
-        // where cos(angle - angleM) >= s
+        // within a half-width of angleM where cos(angle - angleM) >= s
+        // (by its sine where s is near 1: a sliver's precision)
         const vector2D& c = corners[k];
-        const scalar s = (e - (m & c))/rho;
+        const scalar oneLessS = (rho - e + (m & c))/rho;
         const scalar start = k*constant::mathematical::piByTwo;
-        if (s <= -1)
+        if (oneLessS >= 2)
         {
             addArc(c, start, start + constant::mathematical::piByTwo);
         }
-        else if (s < 1)
+        else if (oneLessS > 0)
         {
-            const scalar halfWidth = Foam::acos(s);
+            const scalar halfWidth =
+                oneLessS < 1
+              ? 2*Foam::asin(Foam::sqrt(0.5*oneLessS))
+              : Foam::acos(1 - oneLessS);
             // The arc relative to angleM, starting in (-pi, pi]
             scalar psiA = start - angleM;
             while (psiA > constant::mathematical::pi)
@@ -162,11 +179,12 @@ sliceCut roundedRectangleCut
         }
     }
 
+    // Back to the origin's frame
+    cut.area = area;
+    cut.moment = area*x0 + moment.x()*t + moment.y()*m;
+
     // The chord: the line's interval inside the union of the two crossed
-    // rectangles and the four corner disks (a convex union), run with the
-    // kept part on its left
-    const vector2D t(m.y(), -m.x());
-    const vector2D x0(e*m);
+    // rectangles and the four corner disks (a convex union)
     scalar lo = GREAT;
     scalar hi = -GREAT;
     auto addRectangle = [&](const vector2D& h)
@@ -206,11 +224,7 @@ sliceCut roundedRectangleCut
             hi = max(hi, -b + Foam::sqrt(disc));
         }
     }
-    if (hi > lo)
-    {
-        addSegment(x0 + lo*t, x0 + hi*t);
-        cut.chord = hi - lo;
-    }
+    cut.chord = max(hi - lo, scalar(0));
     return cut;
 }
 
