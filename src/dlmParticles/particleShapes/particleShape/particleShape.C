@@ -26,18 +26,31 @@ Foam::scalar Foam::particleShape::subBoxFraction
     const vector& r,
     const tensor& R,
     const vector& splitDirections,
-    const scalar leafSize
+    const scalar leafSize,
+    const boundBox& bodyBounds
 ) const
 {
     const vector halfSpan(0.5*span);
     const vector rCentre(r + halfSpan);
+    const vector rBody(R.T() & rCentre);
+    const scalar halfDiagonal = mag(halfSpan);
+
+    // Outside the body-frame bounding box by more than the box's
+    // circumscribed sphere: outside, without the (dear) distance
+    if
+    (
+        cmptMax(bodyBounds.min() - rBody) >= halfDiagonal
+     || cmptMax(rBody - bodyBounds.max()) >= halfDiagonal
+    )
+    {
+        return 0;
+    }
 
     vector normal;
-    const scalar d = signedDistance(R.T() & rCentre, normal);
+    const scalar d = signedDistance(rBody, normal);
 
     // The signed distance is a true distance: a box whose circumscribed
     // sphere does not reach the surface is entirely inside or outside
-    const scalar halfDiagonal = mag(halfSpan);
     if (d >= halfDiagonal)
     {
         return 0;
@@ -88,7 +101,8 @@ Foam::scalar Foam::particleShape::subBoxFraction
                     r + offset,
                     R,
                     splitDirections,
-                    leafSize
+                    leafSize,
+                    bodyBounds
                 );
             }
         }
@@ -175,13 +189,29 @@ Foam::scalar Foam::particleShape::boxFraction
     const scalar leafSize
 ) const
 {
+    const boundBox bodyBounds
+    (
+        point
+        (
+            -support(vector(-1, 0, 0)),
+            -support(vector(0, -1, 0)),
+            -support(vector(0, 0, -1))
+        ),
+        point
+        (
+            support(vector(1, 0, 0)),
+            support(vector(0, 1, 0)),
+            support(vector(0, 0, 1))
+        )
+    );
     return subBoxFraction
     (
         bb.span(),
         bb.min() - X,
         R,
         splitDirections,
-        leafSize
+        leafSize,
+        bodyBounds
     );
 }
 
