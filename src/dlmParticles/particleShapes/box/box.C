@@ -6,7 +6,6 @@
 
 #include "box.H"
 #include "cutCellFraction.H"
-#include "Tuple2.H"
 #include "DynamicList.H"
 #include "vector2D.H"
 #include "labelVector.H"
@@ -951,107 +950,64 @@ bool Foam::particleShapes::box::planeCut
         return true;
     }
 
-    // Clip each face to the side n.r >= distance (Sutherland-Hodgman); the
-    // edges' crossings of the plane bound the section
-    pointField corners;
-    faceList faces;
-    drawing(corners, faces);
-    const scalar tol = 1e-12*mag(halfExtents_);
-    auto side = [&](const point& r) { return (n & r) - distance; };
-
-    DynamicList<DynamicList<point>> polygons;
-    DynamicList<point> crossings;
-    for (const face& f : faces)
+    // Each face clipped to the side beyond the plane (Sutherland-Hodgman,
+    // at most five corners), then fanned: the tetrahedra from a point on
+    // the plane give the centroid (the section's own are flat), and the
+    // clipped faces' area vectors sum to the section's, across n
+    static const label faceCorners[6][4] =
     {
-        DynamicList<point> clipped;
-        forAll(f, k)
+        {0, 4, 6, 2}, {1, 3, 7, 5},     // -x, +x
+        {0, 1, 5, 4}, {2, 6, 7, 3},     // -y, +y
+        {0, 2, 3, 1}, {4, 5, 7, 6}      // -z, +z
+    };
+    FixedList<point, 8> corners;
+    forAll(corners, i)
+    {
+        corners[i] = cmptMultiply
+        (
+            halfExtents_,
+            vector(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)
+        );
+    }
+    const point apex(distance*n);
+    scalar sumV = 0;
+    vector moment(Zero);
+    vector areaSum(Zero);
+    FixedList<point, 5> clipped;
+    for (const auto& f : faceCorners)
+    {
+        label nClipped = 0;
+        for (label k = 0; k < 4; ++k)
         {
             const point& a = corners[f[k]];
-            const point& b = corners[f.nextLabel(k)];
-            const scalar sa = side(a);
-            const scalar sb = side(b);
+            const point& b = corners[f[(k + 1) % 4]];
+            const scalar sa = (n & a) - distance;
+            const scalar sb = (n & b) - distance;
             if (sa >= 0)
             {
-                clipped.append(a);
+                clipped[nClipped++] = a;
             }
             if ((sa >= 0) != (sb >= 0))
             {
-                const point x(a + sa/(sa - sb)*(b - a));
-                clipped.append(x);
-                bool seen = false;
-                for (const point& c : crossings)
-                {
-                    seen = seen || mag(c - x) < tol;
-                }
-                if (!seen)
-                {
-                    crossings.append(x);
-                }
+                clipped[nClipped++] = a + sa/(sa - sb)*(b - a);
             }
         }
-        if (clipped.size() >= 3)
+        for (label k = 1; k + 1 < nClipped; ++k)
         {
-            polygons.append(clipped);
-        }
-    }
-
-    // The section: the crossings in order of angle about their mean
-    point middle(Zero);
-    for (const point& c : crossings)
-    {
-        middle += c/crossings.size();
-    }
-    const vector e1
-    (
-        normalised(n ^ (mag(n.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0)))
-    );
-    const vector e2(n ^ e1);
-    List<Tuple2<scalar, label>> order(crossings.size());
-    forAll(crossings, k)
-    {
-        const vector d(crossings[k] - middle);
-        order[k] = Tuple2<scalar, label>(atan2(d & e2, d & e1), k);
-    }
-    Foam::sort(order);
-    DynamicList<point> section(crossings.size());
-    for (const auto& o : order)
-    {
-        section.append(crossings[o.second()]);
-    }
-    if (section.size() >= 3)
-    {
-        polygons.append(section);
-    }
-
-    // Volume-weighted centroid of the tetrahedra from an inner point to
-    // each face's fan of triangles (the clipped part is convex)
-    point inner(Zero);
-    label nPoints = 0;
-    for (const DynamicList<point>& poly : polygons)
-    {
-        for (const point& r : poly)
-        {
-            inner += r;
-            ++nPoints;
-        }
-    }
-    inner /= nPoints;
-    scalar sumV = 0;
-    vector sumC(Zero);
-    for (const DynamicList<point>& poly : polygons)
-    {
-        for (label k = 1; k + 1 < poly.size(); ++k)
-        {
-            const scalar v =
-                mag(((poly[k] - poly[0]) ^ (poly[k + 1] - poly[0])) & (poly[0] - inner))/6;
+            const vector a(clipped[0] - apex);
+            const vector b(clipped[k] - apex);
+            const vector c(clipped[k + 1] - apex);
+            const scalar v = (a & (b ^ c))/6;
             sumV += v;
-            sumC += v*0.25*(inner + poly[0] + poly[k] + poly[k + 1]);
+            moment += v*(a + b + c)/4;
+            areaSum +=
+                0.5*((clipped[k] - clipped[0]) ^ (clipped[k + 1] - clipped[0]));
         }
     }
-    centroid = sumC/max(sumV, VSMALL);
-    for (label k = 1; k + 1 < section.size(); ++k)
+    if (sumV > 0)
     {
-        sectionArea += 0.5*mag((section[k] - section[0]) ^ (section[k + 1] - section[0]));
+        centroid = apex + moment/sumV;
+        sectionArea = areaSum & n;
     }
     return true;
 }
