@@ -96,6 +96,18 @@ def test_box_surface_lands_as_the_box(tmp_path, foam_env):
         histories[name] = case.history()["body"]
     box, surface = histories["primitive"], histories["surface"]
     assert box.shape == surface.shape
+
+    # The surface's VTK at the end: the file's 8 corners, placed and turned
+    # where the primitive's corners are
+    lines = (case.path / "VTK" / "particles" / "surfaces_0.03.vtk").read_text().splitlines()
+    n = int(lines[4].split()[1])
+    drawn = np.array([[float(v) for v in line.split()] for line in lines[5:5 + n]])
+    R = rotation(box[-1:, -4:])[0]
+    corners = np.array([box[-1, 1:4] + R @ (np.array(HALF)*[sx, sy, sz])
+                        for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)])
+    assert n == 8
+    assert np.abs(np.sort(drawn, axis=0) - np.sort(corners, axis=0)).max() < 1e-6*0.008
+
     # It landed: the floor's force acted (mean contact force of a step)
     assert box[:, 18].max() > 0
     assert np.abs(surface[:, 1:4] - box[:, 1:4]).max() < 1e-6*0.008
