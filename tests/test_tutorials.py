@@ -46,7 +46,7 @@ def test_tutorial_scripts_find_the_project_and_edit_no_tracked_file():
     else a directory above it), refuses a case holding results, and each
     dictionary it sets entries of includes the generated file after its
     defaults; Allclean removes the generated files, and git ignores them."""
-    assert len(TUTORIALS) == 8 and len(SCRIPTS) == 11
+    assert len(TUTORIALS) == 9 and len(SCRIPTS) == 12
     for script in SCRIPTS:
         text = script.read_text()
         name = script.relative_to(ROOT)

@@ -7,13 +7,18 @@ Description
     Unit tests of the packing's box and bins (packingBox, sphereBins)
     against brute force over all pairs: minimum-image separations, wrapping
     into the box, and every pair closer than the bin width visited once,
-    across the periodic faces too.
+    across the periodic faces too. The random insertion of mixed shapes
+    (randomShapeInsertion) checked independently of its separating-plane
+    test: no point of a fine grid inside two particles, every point of
+    each particle's surface inside the box; the same seed gives the same
+    placement, an impossible request an error.
 
 \*---------------------------------------------------------------------------*/
 
 #include <catch2/catch.hpp>
 
 #include "sphereBins.H"
+#include "randomShapeInsertion.H"
 #include "IStringStream.H"
 #include "Random.H"
 
@@ -143,6 +148,183 @@ TEST_CASE("sphere bins visit each close pair once", "[geometry]")
             }
         }
     }
+}
+
+
+namespace
+{
+
+//- Two dozen spheres, ellipsoids, boxes and cylinders in a box walled in x
+//  and y, periodic in z, with a gap of 0.2 mm
+dictionary mixedShapes(const label seed, const label nBalls)
+{
+    return dictionary
+    (
+        IStringStream
+        (
+            "box (0 0 0) (0.03 0.03 0.024); periodic (no no yes);"
+            "gap 0.0002; seed " + Foam::name(seed) + ";"
+            "particles {"
+            "  ball { number " + Foam::name(nBalls) + "; shape sphere;"
+            "         radius 0.003; density 2500; }"
+            "  egg { number 6; shape ellipsoid; semiAxes (0.004 0.0025 0.002);"
+            "        density 1400; }"
+            "  brick { number 6; shape box; halfExtents (0.0035 0.003 0.0015);"
+            "          density 2000; }"
+            "  can { number 6; shape cylinder; radius 0.0025; length 0.006;"
+            "        density 2000; orientation (1 (0 0 0)); }"
+            "}"
+        )()
+    );
+}
+
+} // End anonymous namespace
+
+
+TEST_CASE("random insertion places mixed shapes apart", "[geometry]")
+{
+    randomShapeInsertion packing(mixedShapes(3, 6));
+    packing.pack();
+    const List<point>& X = packing.positions();
+    REQUIRE(X.size() == 24);
+
+    // Every pair whose bounding spheres meet: a grid of 40^3 points over
+    // the box around their common part, none inside both shapes
+    const scalar period = 0.024;
+    const label nGrid = 40;
+    label nClose = 0;
+    forAll(X, i)
+    {
+        const particleShape& a = packing.shape(i);
+        const tensor Ra(packing.orientations()[i].R());
+        for (label j = i + 1; j < X.size(); ++j)
+        {
+            const particleShape& b = packing.shape(j);
+            const tensor Rb(packing.orientations()[j].R());
+            vector d(X[j] - X[i]);
+            d.z() -= period*std::round(d.z()/period);
+            const scalar ra = a.boundingRadius();
+            const scalar rb = b.boundingRadius();
+            if (mag(d) >= ra + rb)
+            {
+                continue;
+            }
+            ++nClose;
+            const boundBox lens
+            (
+                max(-ra*vector::one, d - rb*vector::one),
+                min(ra*vector::one, d + rb*vector::one)
+            );
+            label nInBoth = 0;
+            vector normal;
+            for (label l = 0; l < nGrid; ++l)
+            {
+                for (label m = 0; m < nGrid; ++m)
+                {
+                    for (label k = 0; k < nGrid; ++k)
+                    {
+                        const vector r
+                        (
+                            lens.min()
+                          + cmptMultiply
+                            (
+                                vector(l + 0.5, m + 0.5, k + 0.5)/nGrid,
+                                lens.span()
+                            )
+                        );
+                        if
+                        (
+                            a.signedDistance(Ra.T() & r, normal) < 0
+                         && b.signedDistance(Rb.T() & (r - d), normal) < 0
+                        )
+                        {
+                            ++nInBoth;
+                        }
+                    }
+                }
+            }
+            CHECK(nInBoth == 0);
+        }
+    }
+    // The test is not empty: the bounding spheres of many pairs meet
+    CHECK(nClose > 10);
+
+    // Every particle inside the walls in x and y by the gap: each point
+    // of its drawn surface (on the surface, with the exact corners of a
+    // box and rims of a cylinder)
+    forAll(X, i)
+    {
+        pointField points;
+        faceList faces;
+        packing.shape(i).drawing(points, faces);
+        const tensor R(packing.orientations()[i].R());
+        for (const point& r : points)
+        {
+            const point p(X[i] + (R & r));
+            for (direction c = 0; c < 2; ++c)
+            {
+                CHECK(p[c] >= 0.0002 - 1e-12);
+                CHECK(p[c] <= 0.03 - 0.0002 + 1e-12);
+            }
+        }
+    }
+}
+
+
+TEST_CASE("random insertion repeats with its seed", "[geometry]")
+{
+    randomShapeInsertion first(mixedShapes(3, 6));
+    randomShapeInsertion again(mixedShapes(3, 6));
+    randomShapeInsertion other(mixedShapes(4, 6));
+    first.pack();
+    again.pack();
+    other.pack();
+    REQUIRE(first.positions().size() == again.positions().size());
+    bool same = true;
+    bool sameAsOther = true;
+    forAll(first.positions(), i)
+    {
+        same = same
+         && first.positions()[i] == again.positions()[i]
+         && first.orientations()[i].w() == again.orientations()[i].w()
+         && first.orientations()[i].v() == again.orientations()[i].v()
+         && first.name(i) == again.name(i);
+        sameAsOther = sameAsOther
+         && mag(first.positions()[i] - other.positions()[i]) < 1e-9;
+    }
+    CHECK(same);
+    CHECK_FALSE(sameAsOther);
+
+    // The cylinders keep the orientation given, the others turn at random
+    label nTurned = 0;
+    forAll(first.positions(), i)
+    {
+        const quaternion& q = first.orientations()[i];
+        if (first.name(i).substr(0, 4) == "can_")
+        {
+            CHECK(q.w() == 1);
+        }
+        else
+        {
+            CHECK(mag(q.w()*q.w() + magSqr(q.v()) - 1) < 1e-12);
+            nTurned += mag(q.w()) < 0.99;
+        }
+    }
+    CHECK(nTurned > 10);
+}
+
+
+TEST_CASE("random insertion stops on an impossible request", "[geometry]")
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    // 200 balls of 6 mm in 21.6 cm3: a solid fraction of 1.05
+    randomShapeInsertion packing(mixedShapes(1, 200));
+    CHECK_THROWS(packing.pack());
+
+    FatalError.dontThrowExceptions();
+    FatalIOError.dontThrowExceptions();
 }
 
 

@@ -67,32 +67,31 @@ Foam::scalar Foam::convexOverlap::depth
 }
 
 
-Foam::convexOverlap::result Foam::convexOverlap::overlap
+Foam::scalar Foam::convexOverlap::leastDepth
 (
     const particleShape& a,
     const point& Xa,
     const tensor& Ra,
     const particleShape& b,
     const point& Xb,
-    const tensor& Rb
+    const tensor& Rb,
+    const scalar target,
+    vector& n
 ) const
 {
-    result o{0, 0, vector(0, 0, 1), 0.5*(Xa + Xb), 0};
     const vector d(Xb - Xa);
     const scalar magD = mag(d);
-    auto delta = [&](const vector& n)
+    auto delta = [&](const vector& e)
     {
-        return depth(a, Xa, Ra, b, Xb, Rb, n);
+        return depth(a, Xa, Ra, b, Xb, Rb, e);
     };
 
     // The centre line first: most candidate pairs are apart along it
-    vector n(magD > VSMALL ? d/magD : vector(0, 0, 1));
+    n = magD > VSMALL ? d/magD : vector(0, 0, 1);
     scalar least = delta(n);
-    if (least <= 0)
+    if (least <= target)
     {
-        o.depth = least;
-        o.normal = n;
-        return o;
+        return least;
     }
 
     // Where the support functions have kinks, in the global frame: the
@@ -235,10 +234,10 @@ Foam::convexOverlap::result Foam::convexOverlap::overlap
         // none is better; then along each ridge near the point found
         // (where the pattern search stalls: the depth rises steeply off
         // the ridge), by golden sections, until neither improves
-        for (label round = 0; round < 4 && least > 0; ++round)
+        for (label round = 0; round < 4 && least > target; ++round)
         {
             scalar step = spacing_;
-            while (least > 0 && step > tolerance)
+            while (least > target && step > tolerance)
             {
                 vector t1(n ^ vector(1, 0, 0));
                 if (magSqr(t1) < 0.1)
@@ -292,7 +291,7 @@ Foam::convexOverlap::result Foam::convexOverlap::overlap
                 };
                 const scalar phi = goldenSection(along, -spacing_, spacing_);
                 const scalar candidate = along(phi);
-                if (candidate < least*(1 - 1e-12))
+                if (candidate < least - 1e-12*mag(least))
                 {
                     least = candidate;
                     n = cos(phi)*m + sin(phi)*t;
@@ -306,6 +305,40 @@ Foam::convexOverlap::result Foam::convexOverlap::overlap
         }
     }
 
+    return least;
+}
+
+
+bool Foam::convexOverlap::separated
+(
+    const particleShape& a,
+    const point& Xa,
+    const tensor& Ra,
+    const particleShape& b,
+    const point& Xb,
+    const tensor& Rb,
+    const scalar gap
+) const
+{
+    vector n;
+    return leastDepth(a, Xa, Ra, b, Xb, Rb, -gap, n) <= -gap;
+}
+
+
+Foam::convexOverlap::result Foam::convexOverlap::overlap
+(
+    const particleShape& a,
+    const point& Xa,
+    const tensor& Ra,
+    const particleShape& b,
+    const point& Xb,
+    const tensor& Rb
+) const
+{
+    result o{0, 0, vector(0, 0, 1), 0.5*(Xa + Xb), 0};
+    const vector d(Xb - Xa);
+    vector n;
+    const scalar least = leastDepth(a, Xa, Ra, b, Xb, Rb, 0, n);
     o.depth = least;
     o.normal = n;
     if (least <= 0)
