@@ -950,10 +950,8 @@ bool Foam::particleShapes::box::planeCut
         return true;
     }
 
-    // Each face clipped to the side beyond the plane (Sutherland-Hodgman,
-    // at most five corners), then fanned: the tetrahedra from a point on
-    // the plane give the centroid (the section's own are flat), and the
-    // clipped faces' area vectors sum to the section's, across n
+    // Each face's part beyond the plane: the centroid of the tetrahedra
+    // from a point on the plane, the section from the area vectors
     static const label faceCorners[6][4] =
     {
         {0, 4, 6, 2}, {1, 3, 7, 5},     // -x, +x
@@ -973,36 +971,16 @@ bool Foam::particleShapes::box::planeCut
     scalar sumV = 0;
     vector moment(Zero);
     vector areaSum(Zero);
-    FixedList<point, 5> clipped;
     for (const auto& f : faceCorners)
     {
-        label nClipped = 0;
-        for (label k = 0; k < 4; ++k)
-        {
-            const point& a = corners[f[k]];
-            const point& b = corners[f[(k + 1) % 4]];
-            const scalar sa = (n & a) - distance;
-            const scalar sb = (n & b) - distance;
-            if (sa >= 0)
-            {
-                clipped[nClipped++] = a;
-            }
-            if ((sa >= 0) != (sb >= 0))
-            {
-                clipped[nClipped++] = a + sa/(sa - sb)*(b - a);
-            }
-        }
-        for (label k = 1; k + 1 < nClipped; ++k)
-        {
-            const vector a(clipped[0] - apex);
-            const vector b(clipped[k] - apex);
-            const vector c(clipped[k + 1] - apex);
-            const scalar v = (a & (b ^ c))/6;
-            sumV += v;
-            moment += v*(a + b + c)/4;
-            areaSum +=
-                0.5*((clipped[k] - clipped[0]) ^ (clipped[k + 1] - clipped[0]));
-        }
+        const FixedList<point, 4> face
+        ({
+            corners[f[0]], corners[f[1]], corners[f[2]], corners[f[3]]
+        });
+        addFaceBeyondPlane
+        (
+            face.cdata(), 4, n, distance, sumV, moment, areaSum
+        );
     }
     if (sumV > 0)
     {

@@ -135,6 +135,50 @@ bool Foam::particleShape::meshPlaneLine
 }
 
 
+void Foam::particleShape::addFaceBeyondPlane
+(
+    const point* corners,
+    const label nCorners,
+    const vector& n,
+    const scalar distance,
+    scalar& volume,
+    vector& moment,
+    vector& areaSum
+)
+{
+    // Sutherland-Hodgman against the one plane, then a fan
+    const point apex(distance*n);
+    FixedList<point, 8> clipped;
+    label nClipped = 0;
+    for (label k = 0; k < nCorners; ++k)
+    {
+        const point& a = corners[k];
+        const point& b = corners[(k + 1) % nCorners];
+        const scalar sa = (n & a) - distance;
+        const scalar sb = (n & b) - distance;
+        if (sa >= 0)
+        {
+            clipped[nClipped++] = a;
+        }
+        if ((sa >= 0) != (sb >= 0))
+        {
+            clipped[nClipped++] = a + sa/(sa - sb)*(b - a);
+        }
+    }
+    for (label k = 1; k + 1 < nClipped; ++k)
+    {
+        const vector a(clipped[0] - apex);
+        const vector b(clipped[k] - apex);
+        const vector c(clipped[k + 1] - apex);
+        const scalar v = (a & (b ^ c))/6;
+        volume += v;
+        moment += v*(a + b + c)/4;
+        areaSum +=
+            0.5*((clipped[k] - clipped[0]) ^ (clipped[k + 1] - clipped[0]));
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::particleShape::surfaceCrossing

@@ -461,44 +461,24 @@ bool Foam::particleShapes::triSurfaceShape::planeCut
         return true;
     }
 
-    // Each triangle clipped to the side beyond the plane (Sutherland-
-    // Hodgman), then fanned: the tetrahedra from a point on the plane give
-    // the volume and its centroid (the section's own are flat), and the
-    // clipped triangles' area vectors sum to the section's, across n
+    // Each triangle's part beyond the plane: the volume and centroid of
+    // the tetrahedra from a point on the plane, the section from the area
+    // vectors
     const point apex(distance*n);
     const triSurface& surf = geometry_->surface;
     const pointField& points = surf.points();
     vector moment(Zero);
     vector areaSum(Zero);
-    FixedList<point, 4> clipped;
     for (const labelledTri& f : surf)
     {
-        label nClipped = 0;
-        for (label k = 0; k < 3; ++k)
-        {
-            const point& a = points[f[k]];
-            const point& b = points[f[(k + 1) % 3]];
-            const scalar sa = (n & a) - distance;
-            const scalar sb = (n & b) - distance;
-            if (sa >= 0)
-            {
-                clipped[nClipped++] = a;
-            }
-            if ((sa >= 0) != (sb >= 0))
-            {
-                clipped[nClipped++] = a + sa/(sa - sb)*(b - a);
-            }
-        }
-        for (label k = 1; k + 1 < nClipped; ++k)
-        {
-            const vector a(clipped[0] - apex);
-            const vector b(clipped[k] - apex);
-            const vector c(clipped[k + 1] - apex);
-            const scalar v = (a & (b ^ c))/6;
-            volume += v;
-            moment += v*(a + b + c)/4;
-            areaSum += 0.5*((clipped[k] - clipped[0]) ^ (clipped[k + 1] - clipped[0]));
-        }
+        const FixedList<point, 3> triangle
+        ({
+            points[f[0]], points[f[1]], points[f[2]]
+        });
+        addFaceBeyondPlane
+        (
+            triangle.cdata(), 3, n, distance, volume, moment, areaSum
+        );
     }
     if (volume > 0)
     {
