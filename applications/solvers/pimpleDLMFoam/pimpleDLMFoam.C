@@ -39,9 +39,14 @@ Description
     surface cells acted on the solid's mass and braked a particle 1000
     times as heavy as the fluid by tens of times its drag.
 
+    In the first outer corrector the convection takes the flux of the last
+    two steps extrapolated to the new time (PIMPLE extrapolateFlux, default
+    yes): with the last step's alone, the flow a moving particle carries
+    lagged a step.
+
     The time step also keeps the viscous number nu deltaT/h^2 within
-    maxViscousNumber (system/controlDict, default 1), where the projection
-    is stable.
+    maxViscousNumber (system/controlDict; default 50 with three or more
+    pressure correctors, 1 with fewer), where the projection is stable.
 
     A fresh start with moving particles (an initial velocity or angular
     velocity) starts the fluid with them: rigid inside each particle and
