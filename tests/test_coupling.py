@@ -191,8 +191,9 @@ def test_settling_at_high_viscous_numbers_comes_to_a_steady_velocity(
 
 def ten_cate_E4(path, env, step_factor):
     """tutorials/tenCate, case E4 (Re 32), on its own mesh (6 cells per
-    diameter, graded to the side walls) with the tutorial's step limits
-    (maxCo 0.5, maxDeltaT 0.02) scaled by step_factor: u_max [m/s]."""
+    diameter, graded to the side walls) with the step limits maxCo 0.5 and
+    maxDeltaT 0.02 (the Courant number sets the step) scaled by
+    step_factor: u_max [m/s]."""
     case = Case.copy(HERE.parent / "tutorials" / "tenCate", path, env)
     for (file, entry), value in {
         ("constant/transportProperties", "rho"): 960,
