@@ -44,11 +44,8 @@ Usage
 
 #include "argList.H"
 #include "Time.H"
-#include "IOdictionary.H"
-#include "OFstream.H"
-#include "OSspecific.H"
-#include "HashSet.H"
 #include "randomSpherePacking.H"
+#include "packIntoFile.H"
 
 using namespace Foam;
 
@@ -67,56 +64,14 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    const IOdictionary dict
+    packIntoFile<randomSpherePacking>
     (
-        IOobject
-        (
-            "packSpheresDict",
-            runTime.system(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
+        runTime,
+        "packSpheresDict",
+        "constant/packing.dat",
+        args.executable()
     );
 
-    // A misspelt optional keyword would otherwise be ignored silently
-    wordHashSet known(randomSpherePacking::keywords);
-    known.insert({"output", "FoamFile"});
-    for (const entry& e : dict)
-    {
-        if (!known.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword '" << e.keyword() << "'. Known keywords: "
-                << flatOutput(known.sortedToc()) << exit(FatalIOError);
-        }
-    }
-
-    randomSpherePacking packing(dict);
-
-    fileName output
-    (
-        dict.getOrDefault<fileName>("output", "constant/packing.dat")
-    );
-    output.expand();
-    if (!output.isAbsolute())
-    {
-        output = runTime.globalPath()/output;
-    }
-
-    packing.pack();
-
-    mkDir(output.path());
-    OFstream os(output);
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Cannot write " << output << exit(FatalError);
-    }
-    packing.write(os, args.executable());
-
-    Info<< "Wrote " << packing.nSpheres() << " spheres to " << output << nl
-        << endl;
     runTime.printExecutionTime(Info);
 
     Info<< "End\n" << endl;

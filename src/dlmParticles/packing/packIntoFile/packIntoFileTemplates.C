@@ -1,0 +1,75 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "packIntoFile.H"
+#include "IOdictionary.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "HashSet.H"
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+template<class Packing>
+Foam::label Foam::packIntoFile
+(
+    const Time& runTime,
+    const word& dictName,
+    const fileName& defaultOutput,
+    const word& executable
+)
+{
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            dictName,
+            runTime.system(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+
+    wordHashSet known(Packing::keywords);
+    known.insert({"output", "FoamFile"});
+    for (const entry& e : dict)
+    {
+        if (!known.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << e.keyword() << "'. Known keywords: "
+                << flatOutput(known.sortedToc()) << exit(FatalIOError);
+        }
+    }
+
+    Packing packing(dict);
+
+    fileName output(dict.getOrDefault<fileName>("output", defaultOutput));
+    output.expand();
+    if (!output.isAbsolute())
+    {
+        output = runTime.globalPath()/output;
+    }
+
+    packing.pack();
+
+    mkDir(output.path());
+    OFstream os(output);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Cannot write " << output << exit(FatalError);
+    }
+    packing.write(os, executable);
+
+    Info<< "Wrote " << packing.size() << " particles to " << output << nl
+        << endl;
+
+    return packing.size();
+}
+
+
+// ************************************************************************* //
