@@ -590,15 +590,9 @@ TEST_CASE("2D shapes: cuts and supports against sums over a fine grid", "[2D]")
         CHECK(inside.size()*sqr(h) == Approx(shape->volume()).epsilon(5e-3));
         for (const vector& nu : normals)
         {
-            const scalar reach = shape->support(nu);
-            scalar farthest = -GREAT;
-            for (const point& r : inside)
-            {
-                farthest = max(farthest, r & nu);
-            }
             INFO(entries << " normal " << show(nu));
-            CHECK(reach >= farthest);
-            CHECK(reach - farthest < 2*h);
+            shapeChecks::checkSupportReach(*shape, nu, inside, h);
+            const scalar reach = shape->support(nu);
             for (const scalar fraction : {0.3, 0.8})
             {
                 const scalar d = reach*(1 - fraction);
