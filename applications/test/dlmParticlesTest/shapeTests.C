@@ -377,8 +377,8 @@ TEST_CASE("plane cuts and support functions against sums over a fine grid", "[ge
         {
             const vector nu(nRaw/mag(nRaw));
             INFO(entries << " normal " << show(nu));
-            shapeChecks::checkSupportReach(*shape, nu, inside, h);
-            const scalar reach = shape->support(nu);
+            const scalar reach =
+                shapeChecks::checkSupportReach(*shape, nu, inside, h);
 
             for (const scalar fraction : {0.3, 0.8})
             {

@@ -591,8 +591,8 @@ TEST_CASE("2D shapes: cuts and supports against sums over a fine grid", "[2D]")
         for (const vector& nu : normals)
         {
             INFO(entries << " normal " << show(nu));
-            shapeChecks::checkSupportReach(*shape, nu, inside, h);
-            const scalar reach = shape->support(nu);
+            const scalar reach =
+                shapeChecks::checkSupportReach(*shape, nu, inside, h);
             for (const scalar fraction : {0.3, 0.8})
             {
                 const scalar d = reach*(1 - fraction);

@@ -13,7 +13,7 @@
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
 template<class Packing>
-Foam::label Foam::packIntoFile
+void Foam::packIntoFile
 (
     const Time& runTime,
     const word& dictName,
@@ -67,8 +67,6 @@ Foam::label Foam::packIntoFile
 
     Info<< "Wrote " << packing.size() << " particles to " << output << nl
         << endl;
-
-    return packing.size();
 }
 
 
