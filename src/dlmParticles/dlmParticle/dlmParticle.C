@@ -5,7 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dlmParticle.H"
-#include "HashSet.H"
+#include "checkKeywords.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -30,17 +30,12 @@ void Foam::dlmParticle::checkKeywords(const dictionary& dict) const
     });
     known.insert(shape_->keywords());
 
-    for (const entry& e : dict)
-    {
-        if (!known.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword '" << e.keyword() << "' for particle "
-                << name_ << " (shape " << dict.get<word>("shape") << ")."
-                << nl << "Known keywords: " << flatOutput(known.sortedToc())
-                << exit(FatalIOError);
-        }
-    }
+    Foam::checkKeywords
+    (
+        dict,
+        known,
+        "for particle " + name_ + " (shape " + dict.get<word>("shape") + ")"
+    );
 }
 
 

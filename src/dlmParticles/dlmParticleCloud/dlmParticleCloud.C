@@ -11,7 +11,7 @@
 #include "IFstream.H"
 #include "PtrDynList.H"
 #include "cpuTime.H"
-#include "HashSet.H"
+#include "checkKeywords.H"
 #include "OSspecific.H"
 #include "emptyPolyPatch.H"
 #include "cyclicPolyPatch.H"
@@ -1232,15 +1232,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
         "particleFileDefaults", "contact", "historyInterval", "outlets",
         "FoamFile"
     });
-    for (const entry& e : properties_)
-    {
-        if (!known.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(properties_)
-                << "Unknown keyword '" << e.keyword() << "'. Known keywords: "
-                << flatOutput(known.sortedToc()) << exit(FatalIOError);
-        }
-    }
+    checkKeywords(properties_, known);
     if (historyInterval_ < 0)
     {
         FatalIOErrorInFunction(properties_)

@@ -8,9 +8,8 @@
 #include "overlapGeometry.H"
 #include "dlmParticleCloud.H"
 #include "mathematicalConstants.H"
-#include "HashSet.H"
+#include "checkKeywords.H"
 #include "IOdictionary.H"
-#include "FlatOutput.H"
 
 using Foam::constant::mathematical::pi;
 
@@ -82,17 +81,12 @@ void Foam::particleContact::readLaws()
         laws_.append(contactLaw::New(pairDict, nDims, ref));
         const contactLaw& newLaw = laws_.last();
 
-        const wordHashSet known(newLaw.keywords());
-        for (const entry& k : pairDict)
-        {
-            if (!known.found(k.keyword()))
-            {
-                FatalIOErrorInFunction(pairDict)
-                    << "Unknown keyword '" << k.keyword() << "' for contact"
-                    << " pair " << e.keyword() << ". Known keywords: "
-                    << flatOutput(known.sortedToc()) << exit(FatalIOError);
-            }
-        }
+        checkKeywords
+        (
+            pairDict,
+            wordHashSet(newLaw.keywords()),
+            "for contact pair " + e.keyword()
+        );
 
         law(a, b) = laws_.size() - 1;
         law(b, a) = laws_.size() - 1;
@@ -977,16 +971,7 @@ Foam::particleContact::particleContact
         "active", "overlap", "stepsPerContact", "meshWalls", "pairs", "walls",
         "lubrication", "maxStartOverlap"
     });
-    for (const entry& e : dict)
-    {
-        if (!known.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword '" << e.keyword() << "' in the contact"
-                << " settings. Known keywords: "
-                << flatOutput(known.sortedToc()) << exit(FatalIOError);
-        }
-    }
+    checkKeywords(dict, known, "in the contact settings");
     if (maxStartOverlap_ < 0 || maxStartOverlap_ >= 1)
     {
         FatalIOErrorInFunction(dict)

@@ -9,7 +9,7 @@
 #include "fvMatrices.H"
 #include "cpuTime.H"
 #include "fvcFlux.H"
-#include "HashSet.H"
+#include "checkKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -28,20 +28,10 @@ namespace fv
 
 void Foam::fv::rigidProjection::checkKeywords(const dictionary& dict) const
 {
-    const auto check = [this](const dictionary& d, const wordHashSet& known)
-    {
-        for (const entry& e : d)
-        {
-            if (!known.found(e.keyword()))
-            {
-                FatalIOErrorInFunction(d)
-                    << "Unknown keyword '" << e.keyword() << "' for fvOption "
-                    << name_ << " (type " << modelType_ << ")." << nl
-                    << "Known keywords: " << flatOutput(known.sortedToc())
-                    << exit(FatalIOError);
-            }
-        }
-    };
+    const std::string owner
+    (
+        "for fvOption " + name_ + " (type " + modelType_ + ")"
+    );
 
     // fv::option reads type, libs, active, log and the optional
     // <type>Coeffs sub-dictionary, which then holds the projection's own
@@ -55,13 +45,13 @@ void Foam::fv::rigidProjection::checkKeywords(const dictionary& dict) const
     const dictionary* coeffsPtr = dict.findDict(coeffsName);
     if (coeffsPtr)
     {
-        check(*coeffsPtr, own);
+        Foam::checkKeywords(*coeffsPtr, own, owner);
     }
     else
     {
         known += own;
     }
-    check(dict, known);
+    Foam::checkKeywords(dict, known, owner);
 }
 
 void Foam::fv::rigidProjection::recordFractions

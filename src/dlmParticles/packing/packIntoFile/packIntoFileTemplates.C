@@ -8,7 +8,7 @@
 #include "IOdictionary.H"
 #include "OFstream.H"
 #include "OSspecific.H"
-#include "HashSet.H"
+#include "checkKeywords.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -35,15 +35,7 @@ void Foam::packIntoFile
 
     wordHashSet known(Packing::keywords);
     known.insert({"output", "FoamFile"});
-    for (const entry& e : dict)
-    {
-        if (!known.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword '" << e.keyword() << "'. Known keywords: "
-                << flatOutput(known.sortedToc()) << exit(FatalIOError);
-        }
-    }
+    checkKeywords(dict, known);
 
     Packing packing(dict);
 

@@ -5,8 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleOutlet.H"
-#include "HashSet.H"
-#include "FlatOutput.H"
+#include "checkKeywords.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -51,18 +50,12 @@ Foam::autoPtr<Foam::particleOutlet> Foam::particleOutlet::New
 
     autoPtr<particleOutlet> outlet(cstrIter()(dict));
 
-    const wordHashSet known(outlet->keywords());
-    for (const entry& e : dict)
-    {
-        if (!known.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword '" << e.keyword() << "' for outlet "
-                << dict.dictName() << " (type " << outletType << "). Known"
-                << " keywords: " << flatOutput(known.sortedToc())
-                << exit(FatalIOError);
-        }
-    }
+    checkKeywords
+    (
+        dict,
+        wordHashSet(outlet->keywords()),
+        "for outlet " + dict.dictName() + " (type " + outletType + ")"
+    );
 
     return outlet;
 }

@@ -7,8 +7,7 @@
 #include "contactWall.H"
 #include "particleShape.H"
 #include "mathematicalConstants.H"
-#include "HashSet.H"
-#include "FlatOutput.H"
+#include "checkKeywords.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -54,18 +53,12 @@ Foam::autoPtr<Foam::contactWall> Foam::contactWall::New
 
     autoPtr<contactWall> wall(cstrIter()(dict, mesh));
 
-    const wordHashSet known(wall->keywords());
-    for (const entry& e : dict)
-    {
-        if (!known.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword '" << e.keyword() << "' for wall "
-                << dict.dictName() << " (type " << wallType << "). Known"
-                << " keywords: " << flatOutput(known.sortedToc())
-                << exit(FatalIOError);
-        }
-    }
+    checkKeywords
+    (
+        dict,
+        wordHashSet(wall->keywords()),
+        "for wall " + dict.dictName() + " (type " + wallType + ")"
+    );
 
     return wall;
 }
