@@ -77,6 +77,60 @@ def test_free_sphere_across_a_periodic_boundary_is_an_input_error(
     assert "crosses a periodic boundary" in result.log
 
 
+def galilean_case(tmp_path, foam_env, name, velocity):
+    """tutorials/periodicArray at solid fraction 0.027 and 8 cells per
+    diameter, driven at Re 1.5 (nu 2e-4, 1150 Pa/m): the sphere held, or
+    prescribed to move at velocity along x, to 0.6 s (steady to 1e-3)."""
+    case = Case.copy(ARRAY, tmp_path / name, foam_env)
+    system, constant = case.path / "system", case.path / "constant"
+    if velocity:
+        (constant / "particleProperties").write_text(
+            (constant / "particleProperties").read_text().replace(
+                "motion      fixed;",
+                f"motion      prescribed;\n        velocity    ({velocity!r} 0 0);"))
+    for path, old, new in (
+            (constant / "transportProperties", "nu              1e-3;", "nu 2e-4;"),
+            (system / "fvOptions", "((1 0 0) 0)", "((1150 0 0) 0)"),
+            (system / "controlDict", "endTime         0.08;", "endTime 0.6;")):
+        path.write_text(path.read_text().replace(old, new))
+    case.run("./Allrun", 0.027, 8)
+    return case
+
+
+def test_prescribed_sphere_moving_through_periodic_boundaries_sees_the_held_ones_flow(
+        tmp_path, foam_env):
+    """Galilean invariance on the grid: a sphere prescribed to move at
+    -0.08 m/s through the periodic cell of a simple cubic array (crossing
+    its boundaries three times, with all 26 images) has, relative to it,
+    the flow of the held sphere at Re 1.5. Its centroid stays in the cell,
+    and the solid volume is the sphere's at every step (exact fractions),
+    while it crosses a boundary too."""
+    held = galilean_case(tmp_path, foam_env, "held", 0)
+    moving = galilean_case(tmp_path, foam_env, "moving", -0.08)
+    assert "Periodic images: 26" in (moving.path / "log.pimpleDLMFoam").read_text()
+
+    L, x0 = 0.01, 0.005
+    track = moving.history()["sphere"]
+    t, x = track[:, 0], track[:, 1]
+    assert np.all((x >= 0) & (x < L))
+    offset = np.mod(x - (x0 - 0.08*t) + L/2, L) - L/2
+    assert np.abs(offset).max() < 1e-12
+    assert x.max() - x.min() > 0.9*L
+
+    a = L*(3*0.027/(4*math.pi))**(1/3)
+    rows = packed_bed_rows(moving.path)
+    assert np.allclose(rows[:, 2], 1 - 4/3*math.pi*a**3/L**3, rtol=0, atol=1e-8)
+
+    # Superficial velocities relative to the sphere: the volume mean of U
+    # (-0.08 m/s in the sphere) plus 0.08 m/s; its mean over the last
+    # period against the held sphere's steady one
+    steady = packed_bed_rows(held.path)[-1, 1]
+    last = rows[rows[:, 0] >= rows[-1, 0] - L/0.08]
+    relative = last[:, 1].mean() + 0.08
+    assert steady == pytest.approx(0.0799, rel=0.01)
+    assert relative == pytest.approx(steady, rel=2e-3)
+
+
 def test_flow_driven_to_a_superficial_velocity_needs_the_same_gradient(
         tmp_path, foam_env):
     """The periodic array driven by OpenFOAM's meanVelocityForce to the

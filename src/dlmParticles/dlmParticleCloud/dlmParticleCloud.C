@@ -303,10 +303,24 @@ void Foam::dlmParticleCloud::addPeriodicImages()
 
     const boundBox& bounds = mesh_.bounds();
     DynamicList<label> sources;
+    wrapsPeriodic_ = false;
     for (label i = 0; i < nParticles_; ++i)
     {
         const dlmParticle& p = particles_[i];
         const scalar Rb = p.shape().boundingRadius();
+
+        // A prescribed particle moving across the periodic boundaries
+        // needs each image at some time
+        bool movesAcross = false;
+        if (p.motion() == dlmParticle::motionType::prescribed)
+        {
+            for (const vector& t : periodicTranslations(mesh_))
+            {
+                movesAcross = movesAcross || mag(p.velocity() & t) > 0;
+            }
+        }
+        wrapsPeriodic_ = wrapsPeriodic_ || movesAcross;
+
         for (label k = 1; k < offsets.size(); ++k)
         {
             // Images that only touch the mesh (a packing touching the
@@ -320,7 +334,7 @@ void Foam::dlmParticleCloud::addPeriodicImages()
                  && X[d] - Rb < bounds.max()[d] - touch
                  && X[d] + Rb > bounds.min()[d] + touch;
             }
-            if (!inside)
+            if (!inside && !movesAcross)
             {
                 continue;
             }
@@ -530,6 +544,55 @@ void Foam::dlmParticleCloud::checkStart() const
                 << " endTime " << runTime.endTime().value() << "."
                 << " Shorten endTime (system/controlDict) or change the"
                 << " particle's velocity or position" << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::dlmParticleCloud::wrapPeriodic()
+{
+    if (!wrapsPeriodic_)
+    {
+        return;
+    }
+
+    // Each translation pointing from the mesh's low bounds to its high
+    // ones: a centroid inside has 0 <= (X - min).t/|t|^2 < 1
+    const boundBox& bounds = mesh_.bounds();
+    List<vector> translations(periodicTranslations(mesh_));
+    for (vector& t : translations)
+    {
+        if ((bounds.span() & t) < 0)
+        {
+            t = -t;
+        }
+    }
+
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        const dlmParticle& p = particles_[i];
+        if (p.motion() != dlmParticle::motionType::prescribed)
+        {
+            continue;
+        }
+        vector shift(Zero);
+        for (const vector& t : translations)
+        {
+            shift -=
+                std::floor(((p.position() - bounds.min()) & t)/magSqr(t))*t;
+        }
+        if (magSqr(shift) == 0)
+        {
+            continue;
+        }
+        particles_[i].setPosition(p.position() + shift);
+        forAll(imageSource_, k)
+        {
+            if (imageSource_[k] == i)
+            {
+                dlmParticle& image = particles_[nParticles_ + k];
+                image.setPosition(image.position() + shift);
+            }
         }
     }
 }
@@ -1183,6 +1246,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     ),
     historyInterval_(properties_.getOrDefault<label>("historyInterval", 1)),
     nParticles_(0),
+    wrapsPeriodic_(false),
     cellSizes_(gMinMax(centreDistances(mesh)())),
     cellBoxes_(mesh.nCells()),
     cellIsBox_(mesh.nCells()),
@@ -1478,6 +1542,7 @@ void Foam::dlmParticleCloud::move()
         }
     }
 
+    wrapPeriodic();
     addWorkTime(workPart::motion, timer.elapsedCpuTime());
 
     if (resolved_)
