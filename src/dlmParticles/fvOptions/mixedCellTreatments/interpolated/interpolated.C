@@ -370,6 +370,8 @@ Foam::fv::interpolated::interpolated
     ),
     heldForce_(force_.primitiveField()),
     holdRate_(mesh.nCells(), Zero),
+    holdTarget_(mesh.nCells(), Zero),
+    appliedForce_(mesh.nCells(), Zero),
     blendingFactor_
     (
         IOobject
@@ -463,6 +465,7 @@ void Foam::fv::interpolated::constrain(fvMatrix<vector>& eqn)
         }
     }
     const vectorField& u = eqn.psi().primitiveField();
+    holdTarget_ = u;
     forAll(cloud.particles(), i)
     {
         if (cloud.particles()[i].isFree())
@@ -632,6 +635,10 @@ void Foam::fv::interpolated::correct(volVectorField& U)
         for (const label celli : regions_.cells()[i])
         {
             f[celli] = heldForce_[celli] + forceRelaxation_*change[celli];
+            appliedForce_[celli] =
+                heldForce_[celli]
+              + holdRate_[celli]*(holdTarget_[celli] - u[celli])
+              + rho[celli]*error[celli]/deltaT;
             u[celli] += error[celli];
         }
     }
@@ -657,7 +664,7 @@ void Foam::fv::interpolated::setLoads
     PtrList<dlmParticle>& particles = cloud.particles();
     const vectorField& C = mesh_.C();
     const scalarField& V = mesh_.V();
-    const vectorField& f = force_.primitiveField();
+    const vectorField& f = appliedForce_;
 
     // The force holding each held particle
     scalarList holdSums(6*particles.size(), Zero);
