@@ -104,7 +104,8 @@ def test_prescribed_sphere_moving_through_periodic_boundaries_sees_the_held_ones
     its boundaries three times, with all 26 images) has, relative to it,
     the flow of the held sphere at Re 1.5. Its centroid stays in the cell,
     and the solid volume is the sphere's at every step (exact fractions),
-    while it crosses a boundary too."""
+    while it crosses a boundary too; restarted, it continues as if never
+    stopped."""
     held = galilean_case(tmp_path, foam_env, "held", 0)
     moving = galilean_case(tmp_path, foam_env, "moving", -0.08)
     assert "Periodic images: 26" in (moving.path / "log.pimpleDLMFoam").read_text()
@@ -129,6 +130,21 @@ def test_prescribed_sphere_moving_through_periodic_boundaries_sees_the_held_ones
     relative = last[:, 1].mean() + 0.08
     assert steady == pytest.approx(0.0799, rel=0.01)
     assert relative == pytest.approx(steady, rel=2e-3)
+
+    # Restarted from 0.3 s (the sphere wrapped once, its images made again
+    # from it), the run repeats the uninterrupted one
+    restarted = Case(tmp_path / "restarted", foam_env)
+    shutil.copytree(moving.path, restarted.path)
+    for later in ("0.4", "0.5", "0.6"):
+        shutil.rmtree(restarted.path / later)
+    restarted.run("pimpleDLMFoam")
+    segment = np.loadtxt(restarted.path / "postProcessing" / "bed" / "0.3" / "packedBed.dat")
+    repeated = rows[rows[:, 0] > 0.3 + 1e-9]
+    np.testing.assert_allclose(segment[:, 0], repeated[:, 0], rtol=1e-12)
+    np.testing.assert_allclose(segment[:, 1], repeated[:, 1], rtol=1e-9)
+    again = restarted.history("0.3")["sphere"]
+    np.testing.assert_allclose(again[:, 1], track[track[:, 0] > 0.3 + 1e-9, 1],
+                               rtol=0, atol=1e-12)
 
 
 def test_flow_driven_to_a_superficial_velocity_needs_the_same_gradient(
