@@ -105,7 +105,7 @@ def test_prescribed_sphere_moving_through_periodic_boundaries_sees_the_held_ones
     the flow of the held sphere at Re 1.5. Its centroid stays in the cell,
     and the solid volume is the sphere's at every step (exact fractions),
     while it crosses a boundary too; restarted, it continues as if never
-    stopped."""
+    stopped, and on 2 processes it runs as in serial."""
     held = galilean_case(tmp_path, foam_env, "held", 0)
     moving = galilean_case(tmp_path, foam_env, "moving", -0.08)
     assert "Periodic images: 26" in (moving.path / "log.pimpleDLMFoam").read_text()
@@ -145,6 +145,22 @@ def test_prescribed_sphere_moving_through_periodic_boundaries_sees_the_held_ones
     again = restarted.history("0.3")["sphere"]
     np.testing.assert_allclose(again[:, 1], track[track[:, 0] > 0.3 + 1e-9, 1],
                                rtol=0, atol=1e-12)
+
+    # On 2 processes (METIS) to 0.3 s: the same positions, and the flow to
+    # solver tolerance (1e-5 of the relative velocity)
+    parallel = Case.copy(moving.path, tmp_path / "parallel", foam_env, parameters=True)
+    shutil.copy(HERE / "cases" / "sphereBox" / "system" / "decomposeParDict",
+                parallel.path / "system")
+    parallel.set("system/controlDict", "endTime", 0.3)
+    parallel.run("blockMesh")
+    parallel.run("decomposePar")
+    parallel.run("pimpleDLMFoam", np=2)
+    split = packed_bed_rows(parallel.path)
+    serial = rows[rows[:, 0] <= 0.3 + 1e-9]
+    np.testing.assert_allclose(split[:, 0], serial[:, 0], rtol=1e-12)
+    np.testing.assert_allclose(split[:, 1], serial[:, 1], rtol=0, atol=1e-5*0.08)
+    np.testing.assert_allclose(parallel.history()["sphere"][:, 1],
+                               track[track[:, 0] <= 0.3 + 1e-9, 1], rtol=0, atol=1e-12)
 
 
 def test_flow_driven_to_a_superficial_velocity_needs_the_same_gradient(
