@@ -290,8 +290,9 @@ void Foam::dlmParticleCloud::addPeriodicImages()
     nParticles_ = particles_.size();
 
     // Every combination of -1, 0 and 1 times each translation
+    const List<vector> translations(periodicTranslations(mesh_));
     DynamicList<vector> offsets(1, Zero);
-    for (const vector& t : periodicTranslations(mesh_))
+    for (const vector& t : translations)
     {
         const label n = offsets.size();
         for (label k = 0; k < n; ++k)
@@ -314,7 +315,7 @@ void Foam::dlmParticleCloud::addPeriodicImages()
         bool movesAcross = false;
         if (p.motion() == dlmParticle::motionType::prescribed)
         {
-            for (const vector& t : periodicTranslations(mesh_))
+            for (const vector& t : translations)
             {
                 movesAcross = movesAcross || mag(p.velocity() & t) > 0;
             }

@@ -465,7 +465,6 @@ void Foam::fv::interpolated::constrain(fvMatrix<vector>& eqn)
         }
     }
     const vectorField& u = eqn.psi().primitiveField();
-    holdTarget_ = u;
     forAll(cloud.particles(), i)
     {
         if (cloud.particles()[i].isFree())
@@ -480,6 +479,7 @@ void Foam::fv::interpolated::constrain(fvMatrix<vector>& eqn)
                 eqn.diag()[celli] += c;
                 eqn.source()[celli] += c*u[celli];
                 holdRate_[celli] = c/mesh_.V()[celli];
+                holdTarget_[celli] = u[celli];
             }
         }
     }
@@ -632,13 +632,17 @@ void Foam::fv::interpolated::correct(volVectorField& U)
     const vectorField change(forcingChange(error));
     forAll(particles, i)
     {
+        const bool held = !particles[i].isFree();
         for (const label celli : regions_.cells()[i])
         {
             f[celli] = heldForce_[celli] + forceRelaxation_*change[celli];
-            appliedForce_[celli] =
-                heldForce_[celli]
-              + holdRate_[celli]*(holdTarget_[celli] - u[celli])
-              + rho[celli]*error[celli]/deltaT;
+            if (held)
+            {
+                appliedForce_[celli] =
+                    heldForce_[celli]
+                  + holdRate_[celli]*(holdTarget_[celli] - u[celli])
+                  + rho[celli]*error[celli]/deltaT;
+            }
             u[celli] += error[celli];
         }
     }
