@@ -2,6 +2,7 @@
 their free motion, and results that do not depend on the time step."""
 
 import pathlib
+import re
 
 import numpy as np
 import pytest
@@ -221,3 +222,68 @@ def test_settling_at_Re_32_does_not_depend_on_the_time_step(tmp_path, foam_env):
              for factor in (1, 0.5)}
     assert u_max[1] > 0.1
     assert u_max[1] == pytest.approx(u_max[0.5], rel=0.004)
+
+
+def test_long_cells_limit_the_viscous_number_so_the_flow_stays_stable(tmp_path, foam_env):
+    """A periodic box of cells 4.5 times longer along x than across (no
+    particle), a random flow decaying: with three pressure correctors the
+    flow swings and grows from a viscous number of about 10 (pimpleFoam's
+    too; the cubic cells' limit is 50), so the default limit falls to
+    12/(4.5 - 1.5) = 4 and the flow decays."""
+    case = Case.copy(HERE.parent / "tutorials" / "periodicArray", tmp_path / "longCells", foam_env)
+    h, nx, ny = 2.5e-4, 6, 16
+    lx, ly = nx*4.5*h, ny*h
+    (case.path / "system" / "blockMeshDict").write_text(f"""\
+FoamFile {{ version 2.0; format ascii; class dictionary; object blockMeshDict; }}
+vertices ((0 0 0) ({lx} 0 0) ({lx} {ly} 0) (0 {ly} 0)
+          (0 0 {ly}) ({lx} 0 {ly}) ({lx} {ly} {ly}) (0 {ly} {ly}));
+blocks (hex (0 1 2 3 4 5 6 7) ({nx} {ny} {ny}) simpleGrading (1 1 1));
+boundary
+(
+    left   {{ type cyclic; neighbourPatch right; faces ((0 4 7 3)); }}
+    right  {{ type cyclic; neighbourPatch left;  faces ((1 2 6 5)); }}
+    bottom {{ type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }}
+    top    {{ type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }}
+    back   {{ type cyclic; neighbourPatch front; faces ((0 3 2 1)); }}
+    front  {{ type cyclic; neighbourPatch back;  faces ((4 5 6 7)); }}
+);
+""")
+    (case.path / "constant" / "particleProperties").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }\n"
+        "particles {}\n")
+    (case.path / "system" / "fvOptions").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n")
+    cells = nx*ny*ny
+    rng = np.random.default_rng(1)
+    values = "\n".join("(%.9e %.9e %.9e)" % tuple(v) for v in 1e-5*rng.uniform(-1, 1, (cells, 3)))
+    (case.path / "0" / "U").write_text(
+        "FoamFile { version 2.0; format ascii; class volVectorField; object U; }\n"
+        "dimensions [0 1 -1 0 0 0 0];\n"
+        f"internalField nonuniform List<vector> {cells}\n(\n{values}\n);\n"
+        'boundaryField { ".*" { type cyclic; } }\n')
+    case.run("blockMesh")
+    nu = 1e-3
+    steps = 120
+    for (file, entry), value in {
+        ("constant/transportProperties", "nu"): nu,
+        ("system/fvSolution", "PIMPLE/nCorrectors"): 3,
+        ("system/controlDict", "deltaT"): 50*h**2/nu,
+        ("system/controlDict", "adjustTimeStep"): "yes",
+        ("system/controlDict", "maxCo"): 100,
+        ("system/controlDict", "endTime"): steps*4*h**2/nu,
+        ("system/controlDict", "writeInterval"): 1,
+    }.items():
+        case.set(file, entry, value)
+    case.run("foamDictionary", "system/controlDict", "-entry", "maxViscousNumber",
+             "-remove", log="foamDictionary")
+    case.run("foamDictionary", "system/controlDict", "-entry", "functions",
+             "-remove", log="foamDictionary")
+    log = case.run("pimpleDLMFoam").log
+    viscous = np.array([float(v) for v in re.findall(r"^Viscous number: (\S+)", log, re.M)])
+    courant = np.array([float(v) for v in
+                        re.findall(r"^Courant Number mean: \S+ max: (\S+)", log, re.M)])
+    assert len(viscous) > steps
+    assert viscous.max() == pytest.approx(4, rel=1e-6)
+    assert np.isfinite(courant).all()
+    # Decaying: the largest velocity at the end below a tenth of the start's
+    assert courant[-1] < 0.1*courant[1]

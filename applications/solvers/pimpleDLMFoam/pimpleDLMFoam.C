@@ -70,6 +70,7 @@ Description
 #include "runProgress.H"
 #include "rigidProjection.H"
 #include "cpuTime.H"
+#include "cellAspectRatio.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -101,6 +102,8 @@ int main(int argc, char *argv[])
 
     // Smallest squared distance between neighbouring cell centres
     const scalar minDeltaSqr = sqr(particles.cellSizeMin());
+    const scalar aspectRatio = cellAspectRatioMax(mesh);
+    Info<< "Largest cell aspect ratio: " << aspectRatio << endl;
     #include "viscousNumber.H"
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
