@@ -227,9 +227,9 @@ def test_settling_at_Re_32_does_not_depend_on_the_time_step(tmp_path, foam_env):
 def test_long_cells_limit_the_viscous_number_so_the_flow_stays_stable(tmp_path, foam_env):
     """A periodic box of cells 4.5 times longer along x than across (no
     particle), a random flow decaying: with three pressure correctors the
-    flow swings and grows from a viscous number of about 10 (pimpleFoam's
-    too; the cubic cells' limit is 50), so the default limit falls to
-    12/(4.5 - 1.5) = 4 and the flow decays."""
+    flow swings and grows from a viscous number of 4 (pimpleFoam's too;
+    the cubic cells' limit is 50), so the default limit falls to 3 and the
+    flow decays over 300 steps (validation/benchmark_viscousLimit.py)."""
     case = Case.copy(HERE.parent / "tutorials" / "periodicArray", tmp_path / "longCells", foam_env)
     h, nx, ny = 2.5e-4, 6, 16
     lx, ly = nx*4.5*h, ny*h
@@ -263,14 +263,14 @@ boundary
         'boundaryField { ".*" { type cyclic; } }\n')
     case.run("blockMesh")
     nu = 1e-3
-    steps = 120
+    steps = 300
     for (file, entry), value in {
         ("constant/transportProperties", "nu"): nu,
         ("system/fvSolution", "PIMPLE/nCorrectors"): 3,
         ("system/controlDict", "deltaT"): 50*h**2/nu,
         ("system/controlDict", "adjustTimeStep"): "yes",
         ("system/controlDict", "maxCo"): 100,
-        ("system/controlDict", "endTime"): steps*4*h**2/nu,
+        ("system/controlDict", "endTime"): steps*3*h**2/nu,
         ("system/controlDict", "writeInterval"): 1,
     }.items():
         case.set(file, entry, value)
@@ -283,7 +283,7 @@ boundary
     courant = np.array([float(v) for v in
                         re.findall(r"^Courant Number mean: \S+ max: (\S+)", log, re.M)])
     assert len(viscous) > steps
-    assert viscous.max() == pytest.approx(4, rel=1e-6)
+    assert viscous.max() == pytest.approx(3, rel=1e-3)
     assert np.isfinite(courant).all()
     # Decaying: the largest velocity at the end below a tenth of the start's
     assert courant[-1] < 0.1*courant[1]
