@@ -15,7 +15,8 @@ axis-aligned boxes). A mean velocity U = 1e-5 m/s along x is held by
 meanVelocityForce (mu = 1 Pa s, Re = 2e-5), which removes the slow start-up
 of the mean flow through a dilute array; the run ends after 0.12 L^2/nu,
 where the drag has settled (its drift over the last fifth is reported;
-the viscous number is held at 10, see VISCOUS_NUMBER).
+the viscous number is held at 2 with three pressure correctors, see
+VISCOUS_NUMBER).
 
 The drag F over the superficial velocity u (packedBed: the particle's force
 and the volume-averaged velocity) is the array's resistance; its leading
@@ -27,7 +28,8 @@ results/oberbeck.csv and results/oberbeck.png (error against resolution and
 against wall time); prints error, wall time and the observed order.
 
     validation/validate_oberbeck.py [--cases 1x,2x,2y,4x,4y] [--box L/b]
-        [--viscous-number 10] [--no-momentum-predictor] [N ...]
+        [--viscous-number 2] [--pressure-correctors 3]
+        [--no-momentum-predictor] [N ...]
         (default: the spheroids 2x 2y 4x 4y, N = 8 12 16; x: flow along the
         axis, y: across; the box is 16 b for the sphere and aspect 2, 24 b
         for aspect 4 unless --box)
@@ -47,20 +49,22 @@ from stokesFlow import HASIMOTO, oberbeck_resistances, unbounded_resistance
 TABLE = RESULTS / "oberbeck.csv"
 HEADER = ["case", "cellsPerMinorDiameter", "box_b", "cells", "R_periodic",
           "R_corrected", "R_Oberbeck", "relError", "correction", "drift",
-          "wallTime_s", "steps", "momentumPredictor", "viscousNumber"]
+          "wallTime_s", "steps", "momentumPredictor", "viscousNumber",
+          "pressureCorrectors"]
 B = 1e-3                    # minor semi-axis [m]
 MU, NU = 1.0, 1e-3          # dynamic [Pa s] and kinematic [m2/s] viscosity
 U_MEAN = 1e-5               # mean velocity [m/s]
 DEFAULT_BOX = {1: 16, 2: 16, 4: 24}     # in b
 MARGIN = 3                  # uniform cells beyond the bounding box
 GROWTH = 1.2                # largest ratio of neighbouring cell sizes
-# The viscous number nu deltaT/h^2: at 50 (the solver's default with three
-# correctors) the flow in this cell swung from step to step within 0.1
-# L^2/nu, with the mean velocity held or a fixed body force alike; at 10 a
-# slow swing grows only after 0.2 L^2/nu, past the drag's settling (to
-# 1e-4 by 0.12 L^2/nu, the sphere at N = 8), but the sphere at N = 12 and
-# aspect 4 at N = 8 swung within tens of steps (validation/README.md)
-VISCOUS_NUMBER = 10
+# The viscous number nu deltaT/h^2 and the pressure correctors per step:
+# the flow swings from step to step and grows in the graded cells next to
+# the periodic faces, long along one axis and h across, without a particle
+# too and in OpenFOAM's own pimpleFoam. Three correctors hold 2 at N = 8-16;
+# six hold 50 at N = 8 (a tenth of the steps) but not at 12, whose longest
+# cells are longer (validation/README.md)
+VISCOUS_NUMBER = 2
+PRESSURE_CORRECTORS = 3
 SETTLE = 0.12               # run time in L^2/nu
 
 
@@ -89,10 +93,10 @@ def graded_sections(length, core, h):
     return grading, n_core + 2*n
 
 
-def make_case(name, aspect, across, n, box, predictor, viscous_number, env):
+def make_case(name, aspect, across, n, box, predictor, viscous_number, correctors, env):
     case = Case.copy(ROOT / "tutorials" / "periodicArray",
                      RUNS / (f"oberbeck_{name}_N{n}_L{box:g}_VN{viscous_number:g}"
-                            + ("" if predictor else "_noPredictor")),
+                            f"_p{correctors}" + ("" if predictor else "_noPredictor")),
                      env)
     h = 2*B/n
     L = box*B
@@ -155,7 +159,7 @@ rigidProjection
         ("system/controlDict", "writeInterval"): end,
         ("system/controlDict", "deltaT"): 1e-6,
         ("system/controlDict", "maxViscousNumber"): viscous_number,
-        ("system/fvSolution", "PIMPLE/nCorrectors"): 3,
+        ("system/fvSolution", "PIMPLE/nCorrectors"): correctors,
         ("system/fvSolution", "PIMPLE/momentumPredictor"): "yes" if predictor else "no",
         ("system/fvSolution", "solvers/U"): "{ solver GAMG; smoother symGaussSeidel;"
                                             " tolerance 1e-10; relTol 0; }",
@@ -175,6 +179,8 @@ def main():
                         help="no momentum predictor (PIMPLE), against the step-to-step swing")
     parser.add_argument("--viscous-number", type=float, default=VISCOUS_NUMBER,
                         help="largest nu deltaT/h^2")
+    parser.add_argument("--pressure-correctors", type=int, default=PRESSURE_CORRECTORS,
+                        help="pressure correctors per step (PIMPLE nCorrectors)")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12, 16])
     args = parser.parse_args()
 
@@ -189,7 +195,7 @@ def main():
         for n in args.resolutions:
             predictor = not args.no_momentum_predictor
             case, cells = make_case(name, aspect, across, n, box, predictor,
-                                    args.viscous_number, env)
+                                    args.viscous_number, args.pressure_correctors, env)
             seconds = timed_run(case, "pimpleDLMFoam")
             rows = packed_bed_rows(case.path)
             t, u, drag = rows[:, 0], rows[:, 1], rows[:, 8]
@@ -203,7 +209,7 @@ def main():
                                    re.M))
             merge_row(TABLE, HEADER, [name, n, box, cells, periodic[-1], corrected, exact,
                                       error, correction, drift, seconds, steps, int(predictor),
-                                      args.viscous_number],
+                                      args.viscous_number, args.pressure_correctors],
                       key_columns=3)
             print(f"{name} N={n:3d} L={box:g}b cells={cells} F/u={periodic[-1]:.6g}"
                   f" corrected={corrected:.6g} (periodic part {100*correction:+.2f}%)"
