@@ -132,3 +132,49 @@ class Case:
             except ValueError:
                 pass
         return [name for _, name in sorted(found)]
+
+
+def write_periodic_box(case, lengths, counts, gradings=(1, 1, 1)):
+    """system/blockMeshDict of one block from the origin with the given side
+    lengths, cell counts and blockMesh gradings along x, y and z, its
+    opposite faces cyclic pairs."""
+    lx, ly, lz = (repr(float(v)) for v in lengths)
+    (case.path / "system" / "blockMeshDict").write_text(f"""\
+FoamFile {{ version 2.0; format ascii; class dictionary; object blockMeshDict; }}
+vertices ((0 0 0) ({lx} 0 0) ({lx} {ly} 0) (0 {ly} 0)
+          (0 0 {lz}) ({lx} 0 {lz}) ({lx} {ly} {lz}) (0 {ly} {lz}));
+blocks (hex (0 1 2 3 4 5 6 7) ({counts[0]} {counts[1]} {counts[2]})
+        simpleGrading ({gradings[0]} {gradings[1]} {gradings[2]}));
+boundary
+(
+    left   {{ type cyclic; neighbourPatch right; faces ((0 4 7 3)); }}
+    right  {{ type cyclic; neighbourPatch left;  faces ((1 2 6 5)); }}
+    bottom {{ type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }}
+    top    {{ type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }}
+    back   {{ type cyclic; neighbourPatch front; faces ((0 3 2 1)); }}
+    front  {{ type cyclic; neighbourPatch back;  faces ((4 5 6 7)); }}
+);
+""")
+
+
+def long_cell_flow(case, aspect, h, counts, speed=1e-5, seed=1):
+    """The periodicArray tutorial's case turned into a periodic box of
+    uniform cells aspect h x h x h with no particle and no force, holding a
+    random flow of the given speed: the flow alone, to find where the
+    pressure correctors lose stability in long cells."""
+    write_periodic_box(case, (counts[0]*aspect*h, counts[1]*h, counts[2]*h), counts)
+    (case.path / "constant" / "particleProperties").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }\n"
+        "particles {}\n")
+    (case.path / "system" / "fvOptions").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n")
+    cells = int(np.prod(counts))
+    rng = np.random.default_rng(seed)
+    values = "\n".join("(%.9e %.9e %.9e)" % tuple(v)
+                       for v in speed*rng.uniform(-1, 1, (cells, 3)))
+    (case.path / "0" / "U").write_text(
+        "FoamFile { version 2.0; format ascii; class volVectorField; object U; }\n"
+        "dimensions [0 1 -1 0 0 0 0];\n"
+        f"internalField nonuniform List<vector> {cells}\n(\n{values}\n);\n"
+        'boundaryField { ".*" { type cyclic; } }\n')
+    case.run("blockMesh")

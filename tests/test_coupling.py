@@ -7,7 +7,7 @@ import re
 import numpy as np
 import pytest
 
-from foamcase import Case
+from foamcase import Case, long_cell_flow
 
 HERE = pathlib.Path(__file__).parent
 SPHERE_BOX = HERE / "cases" / "sphereBox"
@@ -231,37 +231,8 @@ def test_long_cells_limit_the_viscous_number_so_the_flow_stays_stable(tmp_path, 
     the cubic cells' limit is 50), so the default limit falls to 3 and the
     flow decays over 300 steps (validation/benchmark_viscousLimit.py)."""
     case = Case.copy(HERE.parent / "tutorials" / "periodicArray", tmp_path / "longCells", foam_env)
-    h, nx, ny = 2.5e-4, 6, 16
-    lx, ly = nx*4.5*h, ny*h
-    (case.path / "system" / "blockMeshDict").write_text(f"""\
-FoamFile {{ version 2.0; format ascii; class dictionary; object blockMeshDict; }}
-vertices ((0 0 0) ({lx} 0 0) ({lx} {ly} 0) (0 {ly} 0)
-          (0 0 {ly}) ({lx} 0 {ly}) ({lx} {ly} {ly}) (0 {ly} {ly}));
-blocks (hex (0 1 2 3 4 5 6 7) ({nx} {ny} {ny}) simpleGrading (1 1 1));
-boundary
-(
-    left   {{ type cyclic; neighbourPatch right; faces ((0 4 7 3)); }}
-    right  {{ type cyclic; neighbourPatch left;  faces ((1 2 6 5)); }}
-    bottom {{ type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }}
-    top    {{ type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }}
-    back   {{ type cyclic; neighbourPatch front; faces ((0 3 2 1)); }}
-    front  {{ type cyclic; neighbourPatch back;  faces ((4 5 6 7)); }}
-);
-""")
-    (case.path / "constant" / "particleProperties").write_text(
-        "FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }\n"
-        "particles {}\n")
-    (case.path / "system" / "fvOptions").write_text(
-        "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n")
-    cells = nx*ny*ny
-    rng = np.random.default_rng(1)
-    values = "\n".join("(%.9e %.9e %.9e)" % tuple(v) for v in 1e-5*rng.uniform(-1, 1, (cells, 3)))
-    (case.path / "0" / "U").write_text(
-        "FoamFile { version 2.0; format ascii; class volVectorField; object U; }\n"
-        "dimensions [0 1 -1 0 0 0 0];\n"
-        f"internalField nonuniform List<vector> {cells}\n(\n{values}\n);\n"
-        'boundaryField { ".*" { type cyclic; } }\n')
-    case.run("blockMesh")
+    h = 2.5e-4
+    long_cell_flow(case, 4.5, h, (6, 16, 16))
     nu = 1e-3
     steps = 300
     for (file, entry), value in {

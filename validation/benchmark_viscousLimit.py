@@ -23,6 +23,7 @@ import re
 import numpy as np
 
 from common import RUNS, ROOT, Case, foam_environment
+from foamcase import long_cell_flow
 
 H, NX, NY = 2.5e-4, 8, 24
 NU = 1e-3
@@ -39,36 +40,7 @@ def default_limit(correctors, aspect):
 def stable(aspect, correctors, viscous_number, env):
     case = Case.copy(ROOT / "tutorials" / "periodicArray",
                      RUNS / f"viscousLimit_A{aspect:g}_p{correctors}_VN{viscous_number:g}", env)
-    lx, ly = NX*aspect*H, NY*H
-    (case.path / "system" / "blockMeshDict").write_text(f"""\
-FoamFile {{ version 2.0; format ascii; class dictionary; object blockMeshDict; }}
-vertices ((0 0 0) ({lx!r} 0 0) ({lx!r} {ly!r} 0) (0 {ly!r} 0)
-          (0 0 {ly!r}) ({lx!r} 0 {ly!r}) ({lx!r} {ly!r} {ly!r}) (0 {ly!r} {ly!r}));
-blocks (hex (0 1 2 3 4 5 6 7) ({NX} {NY} {NY}) simpleGrading (1 1 1));
-boundary
-(
-    left   {{ type cyclic; neighbourPatch right; faces ((0 4 7 3)); }}
-    right  {{ type cyclic; neighbourPatch left;  faces ((1 2 6 5)); }}
-    bottom {{ type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }}
-    top    {{ type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }}
-    back   {{ type cyclic; neighbourPatch front; faces ((0 3 2 1)); }}
-    front  {{ type cyclic; neighbourPatch back;  faces ((4 5 6 7)); }}
-);
-""")
-    (case.path / "constant" / "particleProperties").write_text(
-        "FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }\n"
-        "particles {}\n")
-    (case.path / "system" / "fvOptions").write_text(
-        "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n")
-    cells = NX*NY*NY
-    rng = np.random.default_rng(1)
-    values = "\n".join("(%.9e %.9e %.9e)" % tuple(v) for v in 1e-5*rng.uniform(-1, 1, (cells, 3)))
-    (case.path / "0" / "U").write_text(
-        "FoamFile { version 2.0; format ascii; class volVectorField; object U; }\n"
-        "dimensions [0 1 -1 0 0 0 0];\n"
-        f"internalField nonuniform List<vector> {cells}\n(\n{values}\n);\n"
-        'boundaryField { ".*" { type cyclic; } }\n')
-    case.run("blockMesh")
+    long_cell_flow(case, aspect, H, (NX, NY, NY))
     dt = viscous_number*H**2/NU
     for (file, entry), value in {
         ("constant/transportProperties", "nu"): NU,

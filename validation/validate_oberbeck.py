@@ -44,6 +44,7 @@ import numpy as np
 from common import (Case, RESULTS, ROOT, RUNS, foam_environment, merge_row,
                     observed_order, packed_bed_rows, plot_speed_error,
                     stored_rows, timed_run)
+from foamcase import write_periodic_box
 from stokesFlow import HASIMOTO, oberbeck_resistances, unbounded_resistance
 
 TABLE = RESULTS / "oberbeck.csv"
@@ -104,22 +105,7 @@ def make_case(name, aspect, across, n, box, predictor, viscous_number, corrector
     extent = np.array([B, a, B]) if across else np.array([a, B, B])
     gradings, counts = zip(*(graded_sections(L, h*math.ceil(e/h + MARGIN), h)
                              for e in extent))
-    (case.path / "system" / "blockMeshDict").write_text(f"""\
-FoamFile {{ version 2.0; format ascii; class dictionary; object blockMeshDict; }}
-vertices ((0 0 0) ({L!r} 0 0) ({L!r} {L!r} 0) (0 {L!r} 0)
-          (0 0 {L!r}) ({L!r} 0 {L!r}) ({L!r} {L!r} {L!r}) (0 {L!r} {L!r}));
-blocks (hex (0 1 2 3 4 5 6 7) ({counts[0]} {counts[1]} {counts[2]})
-        simpleGrading ({gradings[0]} {gradings[1]} {gradings[2]}));
-boundary
-(
-    left   {{ type cyclic; neighbourPatch right; faces ((0 4 7 3)); }}
-    right  {{ type cyclic; neighbourPatch left;  faces ((1 2 6 5)); }}
-    bottom {{ type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }}
-    top    {{ type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }}
-    back   {{ type cyclic; neighbourPatch front; faces ((0 3 2 1)); }}
-    front  {{ type cyclic; neighbourPatch back;  faces ((4 5 6 7)); }}
-);
-""")
+    write_periodic_box(case, (L, L, L), counts, gradings)
     # Long axis along body x; across the flow: turned 90 degrees about z
     half = math.pi/4
     orientation = f"({math.cos(half)!r} (0 0 {math.sin(half)!r}))" if across else "(1 (0 0 0))"
