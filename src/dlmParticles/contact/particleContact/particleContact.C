@@ -534,7 +534,8 @@ void Foam::particleContact::applyContact
     const vector& normal,
     const scalar h,
     const scalar curvatureRadius,
-    const scalar volumeExponent
+    const scalar volumeExponent,
+    const scalar sectionArea
 )
 {
     const scalar Ri = radius_[i];
@@ -599,14 +600,29 @@ void Foam::particleContact::applyContact
         force_[j] -= F;
         torque_[j] -= rj ^ F;
     }
+    const vector spin(omega_[i] - (j >= 0 ? omega_[j] : vector::zero));
+    vector M(Zero);
     if (law.rollingFriction() > 0 && Fn > 0)
     {
-        const vector M(rollingTorque(i, j, law.rollingFriction()*radius*Fn, h));
-        torque_[i] += M;
-        if (j >= 0)
-        {
-            torque_[j] -= M;
-        }
+        M += spinTorque(i, j, spin, law.rollingFriction()*radius*Fn, h);
+    }
+    if
+    (
+        law.twistingFriction() && law.friction() > 0 && Fn > 0
+     && sectionArea > 0 && !cloud_.twoD()
+    )
+    {
+        // Coulomb's friction over the patch, taken as a disk of its area
+        M += spinTorque
+        (
+            i, j, (spin & normal)*normal,
+            2.0/3.0*law.friction()*Fn*sqrt(sectionArea/pi), h
+        );
+    }
+    torque_[i] += M;
+    if (j >= 0)
+    {
+        torque_[j] -= M;
     }
 
     // A contact that began within this sub-step, a fraction s of it ago:
@@ -670,10 +686,11 @@ void Foam::particleContact::applyContact
 }
 
 
-Foam::vector Foam::particleContact::rollingTorque
+Foam::vector Foam::particleContact::spinTorque
 (
     const label i,
     const label j,
+    const vector& spin,
     const scalar limit,
     const scalar h
 ) const
@@ -684,7 +701,6 @@ Foam::vector Foam::particleContact::rollingTorque
     // the whole cap from each of a body's contacts reverses its spin (a
     // box between the floor and a cylinder on it spun up to 12 rad/s);
     // a quarter from each of up to seven contacts still slows it
-    const vector spin(omega_[i] - (j >= 0 ? omega_[j] : vector::zero));
     const scalar magSpin = mag(spin);
     if (magSpin < VSMALL)
     {
@@ -743,7 +759,8 @@ void Foam::particleContact::applyShapeWallContact
         i, -1, law, spring(c), V, depth,
         position_[i] + (R & centroid), -c.normal, h,
         overlapGeometry::equivalentRadius(area, V, cloud_.twoD() ? 2 : 3),
-        min(max(area*depth/V, scalar(1)), scalar(3))
+        min(max(area*depth/V, scalar(1)), scalar(3)),
+        area
     );
 }
 
@@ -827,7 +844,7 @@ void Foam::particleContact::evaluate(const scalar h)
                     law.tangential() == contactLaw::tangentialType::spring
                   ? &pairSpring_[k] : nullptr,
                     o.volume, o.depth, o.location, o.normal, h,
-                    o.curvatureRadius, o.volumeExponent
+                    o.curvatureRadius, o.volumeExponent, o.sectionArea
                 );
             }
             else

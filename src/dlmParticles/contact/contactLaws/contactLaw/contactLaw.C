@@ -158,6 +158,7 @@ Foam::contactLaw::contactLaw
     restitution_(dict.get<scalar>("restitution")),
     friction_(dict.get<scalar>("friction")),
     rollingFriction_(dict.getOrDefault<scalar>("rollingFriction", 0)),
+    twistingFriction_(dict.getOrDefault<bool>("twistingFriction", true)),
     tangential_
     (
         tangentialTypeNames.getOrDefault
@@ -227,7 +228,8 @@ Foam::wordList Foam::contactLaw::keywords() const
     ({
         "materials", "law", "restitution", "friction", "tangential",
         "frictionLimit", "tangentialStiffnessRatio", "tangentialDampingRatio",
-        "clipNormalForce", "stiffness", "contactTime", "rollingFriction"
+        "clipNormalForce", "stiffness", "contactTime", "rollingFriction",
+        "twistingFriction"
     });
     if (exponent() != 1)
     {

@@ -143,6 +143,7 @@ void Foam::overlapMethods::exact::overlaps
         pairOverlap& o = result[b];
         o.curvatureRadius = -1;
         o.volumeExponent = -1;
+        o.sectionArea = -1;
 
         if (!shapes_[i].round() || !shapes_[j].round())
         {
@@ -169,6 +170,7 @@ void Foam::overlapMethods::exact::overlaps
                     );
                     o.volumeExponent =
                         min(max(c.sectionArea*c.depth/c.volume, scalar(1)), scalar(3));
+                    o.sectionArea = c.sectionArea;
                 }
             }
             continue;

@@ -170,6 +170,7 @@ void Foam::overlapMethods::grid::overlaps
         pairOverlap& o = result[b];
         o.curvatureRadius = -1;
         o.volumeExponent = -1;
+        o.sectionArea = -1;
 
         o.volume = nDims == 3 ? sums[4*b] : sums[4*b]/depth;
         o.depth = equivalentDepth(o.volume, Ri*Rj/(Ri + Rj), nDims);
