@@ -761,3 +761,47 @@ TEST_CASE("non-spherical shapes' input is checked", "[geometry]")
 
 
 // ************************************************************************* //
+
+
+TEST_CASE("a box's face lying in the cutting plane keeps its centroid", "[geometry]")
+{
+    // The common plane of a face on a larger face lies at the larger face,
+    // and a wall's at a face resting on it: the part beyond it is a sheet
+    // whose tetrahedra sum to round-off. Their moment over that sum put
+    // the centroid kilometres away (a cylinder on a box in a dry pile got
+    // a lever arm of 3 km and spun up to 700 rad/s); it is the face's
+    autoPtr<particleShape> shape
+    (
+        makeShape("shape box; halfExtents (0.0025 0.002 0.0015);")
+    );
+    const vector h(0.0025, 0.002, 0.0015);
+    Random rnd(7);
+    label worst = 0, cut = 0;
+    scalar farthest = 0;
+    for (label sample = 0; sample < 2000; ++sample)
+    {
+        // A face's normal through a random rotation and back, as the
+        // contacts take it, at the face's distance give or take round-off
+        const vector axis(normalised(2*rnd.sample01<vector>() - vector::one));
+        const tensor R(quaternion(axis, 2*pi*rnd.sample01<scalar>()).R());
+        const direction d = sample % 3;
+        vector e(Zero);
+        e[d] = sample % 2 ? 1 : -1;
+        const vector n(R.T() & (R & e));
+        const scalar distance = h[d]*(1 + (sample % 9 - 4)*1e-16);
+        scalar V, area;
+        vector centroid;
+        shape->planeCut(n, distance, V, centroid, area);
+        const scalar off = V > 0 ? mag(centroid - h[d]*e) : 0;
+        cut += V > 0;
+        if (off > farthest)
+        {
+            farthest = off;
+            worst = sample;
+        }
+    }
+    INFO("farthest from the face's centre " << farthest << " (sample " << worst
+        << "), " << cut << " cuts");
+    CHECK(cut > 100);
+    CHECK(farthest < 1e-9);
+}

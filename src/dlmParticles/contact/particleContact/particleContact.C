@@ -600,29 +600,33 @@ void Foam::particleContact::applyContact
         force_[j] -= F;
         torque_[j] -= rj ^ F;
     }
+    // Rolling resistance against the whole relative spin; twisting
+    // friction against its part along the normal: Coulomb's friction over
+    // the patch, taken as a disk of its area
     const vector spin(omega_[i] - (j >= 0 ? omega_[j] : vector::zero));
     vector M(Zero);
-    if (law.rollingFriction() > 0 && Fn > 0)
+    const scalar magSpin = mag(spin);
+    if (law.rollingFriction() > 0 && Fn > 0 && magSpin > VSMALL)
     {
-        M += spinTorque(i, j, spin, law.rollingFriction()*radius*Fn, h);
+        M -= law.rollingFriction()*radius*Fn*spin/magSpin;
     }
+    const scalar twist = spin & normal;
     if
     (
         law.twistingFriction() && law.friction() > 0 && Fn > 0
-     && sectionArea > 0 && !cloud_.twoD()
+     && sectionArea > 0 && !cloud_.twoD() && mag(twist) > VSMALL
     )
     {
-        // Coulomb's friction over the patch, taken as a disk of its area
-        M += spinTorque
-        (
-            i, j, (spin & normal)*normal,
-            2.0/3.0*law.friction()*Fn*sqrt(sectionArea/pi), h
-        );
+        M -= 2.0/3.0*law.friction()*Fn*sqrt(sectionArea/pi)*sign(twist)*normal;
     }
-    torque_[i] += M;
-    if (j >= 0)
+    if (magSqr(M) > 0)
     {
-        torque_[j] -= M;
+        spinResistances_.append({i, j, M});
+        ++nSpinResistances_[i];
+        if (j >= 0)
+        {
+            ++nSpinResistances_[j];
+        }
     }
 
     // A contact that began within this sub-step, a fraction s of it ago:
@@ -686,39 +690,52 @@ void Foam::particleContact::applyContact
 }
 
 
-Foam::vector Foam::particleContact::spinTorque
-(
-    const label i,
-    const label j,
-    const vector& spin,
-    const scalar limit,
-    const scalar h
-) const
+void Foam::particleContact::applySpinResistances(const scalar h)
 {
-    // Against the relative spin, at most a quarter of what stops it within
-    // the sub-step (the step's first evaluation, h = 0, opens a sub-step
-    // like the last): each contact of a body takes the cap for itself, so
-    // the whole cap from each of a body's contacts reverses its spin (a
-    // box between the floor and a cylinder on it spun up to 12 rad/s);
-    // a quarter from each of up to seven contacts still slows it
-    const scalar magSpin = mag(spin);
-    if (magSpin < VSMALL)
-    {
-        return Zero;
-    }
-    const vector axis(spin/magSpin);
+    // Each torque against its pair's relative spin, at most a share of
+    // what stops that spin within the sub-step (the step's first
+    // evaluation, h = 0, opens a sub-step like the last): a quarter, or
+    // half over the number of such contacts of the busier body. Each
+    // contact taking the whole of it reversed the spin of a body between
+    // two (a box between the floor and a cylinder on it spun up to
+    // 12 rad/s); a quarter from each, rolling and twisting apart, let a
+    // body with four or more such contacts in a dry pile spin up from
+    // step to step without bound
     const scalar step = h > 0 ? h : correctionStep_;
-    if (step <= 0)
+    for (const spinResistance& r : spinResistances_)
     {
-        return -limit*axis;
+        const label i = r.i;
+        const label j = r.j;
+        const scalar limit = mag(r.torque);
+        const vector axis(r.torque/limit);
+        vector M(r.torque);
+        if (step > 0)
+        {
+            const vector spin
+            (
+                omega_[i] - (j >= 0 ? omega_[j] : vector::zero)
+            );
+            vector response(angularAcceleration(i, orientation_[i], axis));
+            if (j >= 0)
+            {
+                response += angularAcceleration(j, orientation_[j], axis);
+            }
+            const label busier =
+                max(nSpinResistances_[i], j >= 0 ? nSpinResistances_[j] : 0);
+            const scalar share = min(0.25, 0.5/busier);
+            const scalar stopping =
+                share*max(-(spin & axis), scalar(0))
+               /(step*max(axis & response, VSMALL));
+            M = min(limit, stopping)*axis;
+        }
+        torque_[i] += M;
+        if (j >= 0)
+        {
+            torque_[j] -= M;
+        }
     }
-    vector response(angularAcceleration(i, orientation_[i], axis));
-    if (j >= 0)
-    {
-        response += angularAcceleration(j, orientation_[j], axis);
-    }
-    const scalar stopping = 0.25*magSpin/(step*max(axis & response, VSMALL));
-    return -min(limit, stopping)*axis;
+    spinResistances_.clear();
+    nSpinResistances_ = 0;
 }
 
 
@@ -929,6 +946,8 @@ void Foam::particleContact::evaluate(const scalar h)
         }
     }
 
+    applySpinResistances(h);
+
     // Wall contacts that ended lose their history
     DynamicList<contactKey> ended;
     forAllConstIters(history_, iter)
@@ -1105,6 +1124,8 @@ void Foam::particleContact::evolve
     onsetTorque_.setSize(n);
     exitForce_.setSize(n);
     exitTorque_.setSize(n);
+    nSpinResistances_.setSize(n);
+    nSpinResistances_ = 0;
     force_ = Zero;
     torque_ = Zero;
     onsetForce_ = Zero;

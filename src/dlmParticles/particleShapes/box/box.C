@@ -982,11 +982,8 @@ bool Foam::particleShapes::box::planeCut
             face.cdata(), 4, n, distance, sumV, moment, areaSum
         );
     }
-    if (sumV > 0)
-    {
-        centroid = apex + moment/sumV;
-        sectionArea = areaSum & n;
-    }
+    centroid = cutCentroid(apex, moment, sumV, boundingRadius());
+    sectionArea = areaSum & n;
     return true;
 }
 

@@ -179,6 +179,24 @@ void Foam::particleShape::addFaceBeyondPlane
 }
 
 
+Foam::point Foam::particleShape::cutCentroid
+(
+    const point& apex,
+    const vector& moment,
+    const scalar volume,
+    const scalar size
+)
+{
+    // Each tetrahedron's volume is good to round-off of size^3: a sum
+    // below a thousand times that is a sheet in the plane
+    if (volume <= 1e3*SMALL*pow3(size))
+    {
+        return apex;
+    }
+    return apex + moment/volume;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::particleShape::surfaceCrossing

@@ -482,7 +482,7 @@ bool Foam::particleShapes::triSurfaceShape::planeCut
     }
     if (volume > 0)
     {
-        centroid = apex + moment/volume;
+        centroid = cutCentroid(apex, moment, volume, boundingRadius());
         sectionArea = areaSum & n;
     }
     else
