@@ -603,7 +603,7 @@ void Foam::particleContact::applyContact
     // Rolling resistance against the whole relative spin; twisting
     // friction against its part along the normal: Coulomb's friction over
     // the patch, taken as a disk of its area
-    const vector spin(omega_[i] - (j >= 0 ? omega_[j] : vector::zero));
+    const vector spin(relativeSpin(i, j));
     vector M(Zero);
     const scalar magSpin = mag(spin);
     if (law.rollingFriction() > 0 && Fn > 0 && magSpin > VSMALL)
@@ -711,10 +711,7 @@ void Foam::particleContact::applySpinResistances(const scalar h)
         vector M(r.torque);
         if (step > 0)
         {
-            const vector spin
-            (
-                omega_[i] - (j >= 0 ? omega_[j] : vector::zero)
-            );
+            const vector spin(relativeSpin(i, j));
             vector response(angularAcceleration(i, orientation_[i], axis));
             if (j >= 0)
             {
