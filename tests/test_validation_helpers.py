@@ -1,7 +1,7 @@
 """Helpers of the validation scripts that carry physics: the conversion of
 drag correlations for random arrays of spheres to the DLM paper's Lambda,
-and the layered Ergun estimates of the anisotropic beds; and the results
-tables' merge."""
+and the layered Ergun estimates of the anisotropic beds; the records of a
+run in parts; and the results tables' merge."""
 
 import pathlib
 import sys
@@ -12,6 +12,7 @@ import pytest
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "validation"))
 from common import (beetstra_drag, correlation_lambda, ergun_lambda,  # noqa: E402
                     merge_row, tang_drag)
+import pebbleDischarge  # noqa: E402
 import validate_anisotropicBed as anisotropic  # noqa: E402
 
 
@@ -81,3 +82,31 @@ def test_merge_row_replaces_by_key_adds_columns_and_refuses_other_columns(tmp_pa
     with pytest.raises(SystemExit, match="not this script's"):
         merge_row(path, ["case", "medium", "N", "value", "time"], ["c", "wet", 4, 5.0, 1])
     assert path.read_text() == before
+
+
+def test_a_discharge_run_in_parts_counts_each_pebble_once(tmp_path):
+    """A run stopped at 1.3 s after its last write at 1.0 and resumed from
+    1.0 wrote the pebbles that left between 1.0 and 1.3 twice (in the
+    directories 0 and 1); a second resume from 2.0 wrote its own directory.
+    Each departure counts once, from the part that wrote it last, and so
+    does the history at the restart time."""
+    outlets = tmp_path / "postProcessing/particleOutlets"
+    departures = {"0": [0.5, 0.9, 1.1, 1.25], "1": [1.1, 1.25, 1.6, 1.95, 2.2],
+                  "2": [2.3, 2.8]}
+    for start, times in departures.items():
+        (outlets / start).mkdir(parents=True)
+        (outlets / start / "outlets.dat").write_text(
+            "# time outlet particle mass x y z Ux Uy Uz outletParticles outletMass\n"
+            + "".join(f"{t} chute p{t} 0.007 0 0 0.6 0 0 0.3 0 0\n" for t in times))
+    t, mass = pebbleDischarge.outlet_record(tmp_path)
+    assert list(t) == [0.5, 0.9, 1.1, 1.25, 1.6, 1.95, 2.3, 2.8]
+    assert mass[-1] == pytest.approx(8*0.007)
+    particles = tmp_path / "postProcessing/particles"
+    for start, times in {"0": [0, 0.5, 1.0, 1.5], "1": [1.0, 1.5, 2.0]}.items():
+        (particles / start).mkdir(parents=True)
+        (particles / start / "particles.dat").write_text(
+            "# time particle x y z Ux Uy Uz\n"
+            + "".join(f"{t} p0 0 0 {t} 0 0 0.1\n" for t in times))
+    times, names, rows = pebbleDischarge.history(tmp_path)
+    assert list(times) == [0, 0.5, 1.0, 1.5, 2.0]
+    assert list(rows[:, 2]) == [0, 0.5, 1.0, 1.5, 2.0]

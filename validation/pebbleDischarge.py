@@ -28,16 +28,30 @@ def geometry(case_dir):
     return {k: float(v) for k, v in re.findall(r"^(\w+)\s+([-0-9.eE]+);", text, re.M)}
 
 
+def restarted_rows(record_dir, file_name):
+    """The rows (split into fields) of a record written by every run of a
+    case, one directory per start time: a run's rows after the next run's
+    start are dropped, since that run wrote them again from its restart."""
+    starts = sorted((float(path.parent.name), path)
+                    for path in pathlib.Path(record_dir).glob(f"*/{file_name}"))
+    rows = []
+    for i, (start, path) in enumerate(starts):
+        end = starts[i + 1][0] if i + 1 < len(starts) else np.inf
+        for line in path.read_text().splitlines():
+            if line.startswith("#"):
+                continue
+            fields = line.split()
+            if (i == 0 or float(fields[0]) > start) and float(fields[0]) <= end:
+                rows.append(fields)
+    return rows
+
+
 def outlet_record(case_dir):
     """Times and cumulative mass of the pebbles that left, over every run
     of the case (restarts append a directory per start time)."""
-    rows = []
-    for path in sorted((pathlib.Path(case_dir) / "postProcessing/particleOutlets").glob(
-            "*/outlets.dat")):
-        for line in path.read_text().splitlines():
-            if not line.startswith("#"):
-                fields = line.split()
-                rows.append((float(fields[0]), float(fields[3])))
+    rows = [(float(fields[0]), float(fields[3])) for fields in
+            restarted_rows(pathlib.Path(case_dir) / "postProcessing/particleOutlets",
+                           "outlets.dat")]
     rows.sort()
     t = np.array([r[0] for r in rows])
     return t, np.cumsum([r[1] for r in rows])
@@ -47,15 +61,11 @@ def history(case_dir):
     """Pebble history (every historyInterval steps): times, names and
     positions (time, pebble, xyz) and velocities, from every start time."""
     times, names, rows = [], [], []
-    for path in sorted((pathlib.Path(case_dir) / "postProcessing/particles").glob(
-            "*/particles.dat")):
-        for line in path.read_text().splitlines():
-            if line.startswith("#"):
-                continue
-            fields = line.split()
-            times.append(float(fields[0]))
-            names.append(fields[1])
-            rows.append([float(v) for v in fields[2:8]])
+    for fields in restarted_rows(pathlib.Path(case_dir) / "postProcessing/particles",
+                                 "particles.dat"):
+        times.append(float(fields[0]))
+        names.append(fields[1])
+        rows.append([float(v) for v in fields[2:8]])
     return np.array(times), np.array(names), np.array(rows)
 
 

@@ -12,7 +12,7 @@ results/pebbleDischarge_<scene>_<N>_e<e>_k<factor>.png.
     validation/validate_pebbleDischarge.py [--scene reduced|full]
         [--medium wet|dry|both] [--liggghts] [--law overlapVolume|linear]
         [--end-time T] [--np 1] [--restitution e] [--stiffness-factor f]
-        [N ...]           (default reduced, wet, overlapVolume, 6 s, N = 4,
+        [--resume] [N ...]           (default reduced, wet, overlapVolume, 6 s, N = 4,
                            e 0.8, f 0.01)
 
 --medium dry runs the same bed without water (the tutorial's Allrun.dry:
@@ -33,7 +33,11 @@ critical damping; restitution exp(-pi z/sqrt(1 - z^2)) of a linear spring:
 over 2.85e11 N/m3, the Hertzian value at an overlap of 1 % of d).
 
 The full scene's discharge lasts about 35 s: at N = 4 (370 000 cells) a
-few hours on 2 cores; --end-time gives its early rate sooner.
+few hours on 2 cores; --end-time gives its early rate sooner. --resume
+continues the wet run of an earlier call (same scene, N and parameters,
+serial or on the ranks it was decomposed for) from its latest written time
+to --end-time, so that a long discharge can run in parts; the wall time
+reported is then the solver's clock over all parts.
 """
 
 import argparse
@@ -78,9 +82,7 @@ def linear_stiffness(factor, d, wall):
 
 
 def make_case(scene, n, restitution, factor, law, medium):
-    case = RUNS / (f"pebbleDischarge_{scene}_{n}_e{restitution:g}_k{factor:g}"
-                   + ("_linear" if law == "linear" else "")
-                   + ("_dry" if medium == "dry" else ""))
+    case = RUNS / case_name(scene, n, restitution, factor, law, medium)
     if case.exists():
         shutil.rmtree(case)
     shutil.copytree(ROOT / "tutorials" / "pebbleDischarge", case,
@@ -116,6 +118,33 @@ def make_case(scene, n, restitution, factor, law, medium):
             text = text.replace(block, linear)
     props.write_text(text)
     return case
+
+
+def case_name(scene, n, restitution, factor, law, medium):
+    return (f"pebbleDischarge_{scene}_{n}_e{restitution:g}_k{factor:g}"
+            + ("_linear" if law == "linear" else "") + ("_dry" if medium == "dry" else ""))
+
+
+def resume_command(case, end_time, n_procs):
+    """The solver's command that continues a wet run from its latest
+    written time to end_time (the endTime entry in controlDict.Allrun)."""
+    parallel = (case / "processor0").is_dir()
+    written = sorted(float(p.name) for p in (case / ("processor0" if parallel else ".")).iterdir()
+                     if re.fullmatch(r"[0-9.eE+-]+", p.name) and p.is_dir())
+    if not written or written[-1] <= 0:
+        raise SystemExit(f"{case}: nothing to resume (no written time after 0)")
+    if parallel and n_procs != len(list(case.glob("processor[0-9]*"))):
+        raise SystemExit(f"{case}: decomposed for {len(list(case.glob('processor[0-9]*')))}"
+                         f" ranks, not --np {n_procs}")
+    allrun = case / "system/controlDict.Allrun"
+    allrun.write_text(re.sub(r"^endTime\s+[^;]*;", f"endTime         {end_time:g};",
+                             allrun.read_text(), flags=re.M))
+    print(f"{case.name}: resuming from {written[-1]:g} s to {end_time:g} s")
+    solver = ["pimpleDLMFoam", "-case", str(case)]
+    if parallel:
+        return (["mpirun", "--allow-run-as-root", "-np", str(n_procs)] + solver
+                + ["-parallel"], ["reconstructPar", "-case", str(case), "-newTimes"])
+    return solver, None
 
 
 def entry(path, keyword):
@@ -154,10 +183,18 @@ def main():
     parser.add_argument("--np", type=int, default=1)
     parser.add_argument("--restitution", type=float, default=0.8)
     parser.add_argument("--stiffness-factor", type=float, default=0.01)
+    parser.add_argument("--resume", action="store_true")
     parser.add_argument("resolutions", nargs="*", type=int, default=[4])
     args = parser.parse_args()
+    if args.resume and (args.medium != "wet" or args.liggghts):
+        parser.error("--resume continues a wet run only")
     env = foam_environment()
     for n in args.resolutions:
+        if args.resume:
+            case = RUNS / case_name(args.scene, n, args.restitution, args.stiffness_factor,
+                                    args.law, "wet")
+            resume(case, n, args, env)
+            continue
         case = make_case(args.scene, n, args.restitution, args.stiffness_factor, args.law,
                          args.medium)
         label = (f"{args.scene}, N = {n}, e = {args.restitution:g}, "
@@ -202,6 +239,54 @@ def main():
         suffix = "_wetDry" if args.medium == "both" else ""
         pebbleDischarge.plot([s for _, s in summaries], RESULTS / f"{case.name}{suffix}.png",
                              [lab for lab, _ in summaries])
+
+
+def solver_clock_times(case):
+    """The solver's clock time of each part of a run (its log and the
+    resumed parts' log, in which each part's clock starts again from 0);
+    steps after a part's last write that the next part repeated count
+    twice, the set-up not at all."""
+    parts = []
+    for log in ("log.pimpleDLMFoam", "log.pimpleDLMFoam.resumed"):
+        path = case / log
+        if not path.exists():
+            continue
+        last = None
+        for clock in re.findall(r"ClockTime = ([0-9.eE+-]+) s", path.read_text()):
+            clock = float(clock)
+            if last is not None and clock < last:
+                parts.append(last)
+            last = clock
+        if last is not None:
+            parts.append(last)
+    return parts
+
+
+def resume(case, n, args, env):
+    """Continue the wet run of case to --end-time, then report and record
+    it as a whole (its wall time the sum over its parts)."""
+    if not case.is_dir():
+        raise SystemExit(f"{case}: no such run to resume")
+    solver, reconstruct = resume_command(case, args.end_time, args.np)
+    with open(case / "log.pimpleDLMFoam.resumed", "a") as log:
+        result = subprocess.run(solver, env=env, stdout=log, stderr=subprocess.STDOUT)
+        if result.returncode == 0 and reconstruct:
+            result = subprocess.run(reconstruct, env=env, stdout=log, stderr=subprocess.STDOUT)
+    if result.returncode != 0:
+        raise SystemExit(f"{case}: {solver[0]} failed (log.pimpleDLMFoam.resumed)")
+    parts = solver_clock_times(case)
+    wall = sum(parts)
+    s = pebbleDischarge.summary(case)
+    print("\n".join(pebbleDischarge.report(case, s)))
+    print(f"  wall time  {wall:.0f} s: the solver's clock over {len(parts)} parts"
+          f" ({', '.join(f'{p:.0f}' for p in parts)} s; without the set-up)")
+    merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
+              [args.scene, "wet", args.law, CHUTE, n, args.restitution, args.stiffness_factor,
+               PEBBLES[args.scene], args.end_time, s["left"], f"{s['chute_flux']:.2f}",
+               f"{s['bed_flux']:.2f}", f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=7)
+    pebbleDischarge.plot([s], RESULTS / f"{case.name}.png",
+                         [f"{args.scene}, N = {n}, e = {args.restitution:g}, "
+                          f"factor {args.stiffness_factor:g}, {args.law}, wet"])
 
 
 if __name__ == "__main__":
