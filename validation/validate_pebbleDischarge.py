@@ -36,8 +36,9 @@ The full scene's discharge lasts about 35 s: at N = 4 (370 000 cells) a
 few hours on 2 cores; --end-time gives its early rate sooner. --resume
 continues the wet run of an earlier call (same scene, N and parameters,
 serial or on the ranks it was decomposed for) from its latest written time
-to --end-time, so that a long discharge can run in parts; the wall time
-reported is then the solver's clock over all parts.
+to --end-time, so that a long discharge can run in parts (stop a part with
+`stopAt writeNow;` in the case's system/controlDict: it writes and ends);
+the wall time reported is then the solver's clock over all parts.
 """
 
 import argparse
@@ -139,6 +140,10 @@ def resume_command(case, end_time, n_procs):
     allrun = case / "system/controlDict.Allrun"
     allrun.write_text(re.sub(r"^endTime\s+[^;]*;", f"endTime         {end_time:g};",
                              allrun.read_text(), flags=re.M))
+    # A part stopped by stopAt writeNow
+    control = case / "system/controlDict"
+    control.write_text(re.sub(r"^stopAt\s+[^;]*;", "stopAt          endTime;",
+                              control.read_text(), flags=re.M))
     print(f"{case.name}: resuming from {written[-1]:g} s to {end_time:g} s")
     solver = ["pimpleDLMFoam", "-case", str(case)]
     if parallel:
