@@ -14,6 +14,7 @@ from common import (beetstra_drag, correlation_lambda, ergun_lambda,  # noqa: E4
                     merge_row, tang_drag)
 import pebbleDischarge  # noqa: E402
 import validate_anisotropicBed as anisotropic  # noqa: E402
+import validate_pebbleDischarge  # noqa: E402
 
 
 @pytest.mark.parametrize("porosity", [0.36, 0.3983, 0.48])
@@ -110,3 +111,14 @@ def test_a_discharge_run_in_parts_counts_each_pebble_once(tmp_path):
     times, names, rows = pebbleDischarge.history(tmp_path)
     assert list(times) == [0, 0.5, 1.0, 1.5, 2.0]
     assert list(rows[:, 2]) == [0, 0.5, 1.0, 1.5, 2.0]
+
+
+def test_a_run_in_parts_takes_the_solvers_clock_of_every_part(tmp_path):
+    """The first part's log and the resumed parts' log, in which each part's
+    clock starts again: the wall time is the sum of each part's last clock."""
+    (tmp_path / "log.pimpleDLMFoam").write_text(
+        "ExecutionTime = 1 s  ClockTime = 2 s\nExecutionTime = 9 s  ClockTime = 10 s\n")
+    (tmp_path / "log.pimpleDLMFoam.resumed").write_text(
+        "ExecutionTime = 3 s  ClockTime = 4 s\nExecutionTime = 6 s  ClockTime = 7 s\n"
+        "ExecutionTime = 1 s  ClockTime = 1 s\nExecutionTime = 20 s  ClockTime = 21 s\n")
+    assert validate_pebbleDischarge.solver_clock_times(tmp_path) == [10, 7, 21]

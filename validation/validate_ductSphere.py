@@ -176,11 +176,15 @@ boundaryField
     return case
 
 
+def cell_count(case):
+    return int(re.search(r"cells:\s+(\d+)", case.run("checkMesh").log).group(1))
+
+
 def body_fitted_drag(fluid, level, speed, half_length, env):
     case = body_fitted_case(fluid, level, speed, half_length, env)
     seconds = timed_run(case, "blockMesh")
     seconds += timed_run(case, "snappyHexMesh", "-overwrite")
-    cells = int(re.search(r"cells:\s+(\d+)", case.run("checkMesh").log).group(1))
+    cells = cell_count(case)
     result = case.run("simpleFoam")
     seconds += float(re.findall(r"ClockTime = ([0-9.]+)", result.log)[-1])
     if "SIMPLE solution converged" not in result.log:
@@ -280,8 +284,7 @@ def dlm_drag(fluid, n, speed, half_length, env):
     if change > 1e-4:
         raise SystemExit(f"{case.path}: the drag still changes ({change:.1e} over the run's"
                          " second half)")
-    cells = int(re.search(r"cells:\s+(\d+)", case.run("checkMesh").log).group(1))
-    return drag, cells, seconds
+    return drag, cell_count(case), seconds
 
 
 def main():

@@ -12,8 +12,8 @@ results/pebbleDischarge_<scene>_<N>_e<e>_k<factor>.png.
     validation/validate_pebbleDischarge.py [--scene reduced|full]
         [--medium wet|dry|both] [--liggghts] [--law overlapVolume|linear]
         [--end-time T] [--np 1] [--restitution e] [--stiffness-factor f]
-        [--resume] [N ...]           (default reduced, wet, overlapVolume, 6 s, N = 4,
-                           e 0.8, f 0.01)
+        [--resume] [N ...]  (default reduced, wet, overlapVolume, 6 s, N = 4,
+                             e 0.8, f 0.01)
 
 --medium dry runs the same bed without water (the tutorial's Allrun.dry:
 dlmDEMFoam under buoyancy-reduced gravity; its rows have cellsPerDiameter
@@ -134,9 +134,9 @@ def resume_command(case, end_time, n_procs):
                      if re.fullmatch(r"[0-9.eE+-]+", p.name) and p.is_dir())
     if not written or written[-1] <= 0:
         raise SystemExit(f"{case}: nothing to resume (no written time after 0)")
-    if parallel and n_procs != len(list(case.glob("processor[0-9]*"))):
-        raise SystemExit(f"{case}: decomposed for {len(list(case.glob('processor[0-9]*')))}"
-                         f" ranks, not --np {n_procs}")
+    ranks = len(list(case.glob("processor[0-9]*")))
+    if parallel and n_procs != ranks:
+        raise SystemExit(f"{case}: decomposed for {ranks} ranks, not --np {n_procs}")
     allrun = case / "system/controlDict.Allrun"
     allrun.write_text(re.sub(r"^endTime\s+[^;]*;", f"endTime         {end_time:g};",
                              allrun.read_text(), flags=re.M))
@@ -150,6 +150,20 @@ def resume_command(case, end_time, n_procs):
         return (["mpirun", "--allow-run-as-root", "-np", str(n_procs)] + solver
                 + ["-parallel"], ["reconstructPar", "-case", str(case), "-newTimes"])
     return solver, None
+
+
+def run_label(args, n):
+    return (f"{args.scene}, N = {n}, e = {args.restitution:g}, "
+            f"factor {args.stiffness_factor:g}, {args.law}")
+
+
+def record_row(args, medium, law, cells, s, wall):
+    """The run's row in results/pebbleDischarge.csv."""
+    merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
+              [args.scene, medium, law, CHUTE if medium == "wet" else "-", cells,
+               args.restitution, args.stiffness_factor, PEBBLES[args.scene], args.end_time,
+               s["left"], f"{s['chute_flux']:.2f}", f"{s['bed_flux']:.2f}",
+               f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=7)
 
 
 def entry(path, keyword):
@@ -202,8 +216,7 @@ def main():
             continue
         case = make_case(args.scene, n, args.restitution, args.stiffness_factor, args.law,
                          args.medium)
-        label = (f"{args.scene}, N = {n}, e = {args.restitution:g}, "
-                 f"factor {args.stiffness_factor:g}, {args.law}")
+        label = run_label(args, n)
         runs = []
         if args.medium in ("wet", "both"):
             runs.append(("wet", case, n, [str(case / "Allrun"), str(n), str(args.np),
@@ -215,12 +228,7 @@ def main():
 
         def record(medium, law, cells, s, wall):
             summaries.append((f"{label if medium != 'dryLIGGGHTS' else 'LIGGGHTS'}, {medium}", s))
-            merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
-                      [args.scene, medium, law, CHUTE if medium == "wet" else "-", cells,
-                       args.restitution, args.stiffness_factor,
-                       PEBBLES[args.scene], args.end_time, s["left"],
-                       f"{s['chute_flux']:.2f}", f"{s['bed_flux']:.2f}",
-                       f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=7)
+            record_row(args, medium, law, cells, s, wall)
 
         for medium, run_dir, cells, command in runs:
             start = time.perf_counter()
@@ -285,13 +293,8 @@ def resume(case, n, args, env):
     print("\n".join(pebbleDischarge.report(case, s)))
     print(f"  wall time  {wall:.0f} s: the solver's clock over {len(parts)} parts"
           f" ({', '.join(f'{p:.0f}' for p in parts)} s; without the set-up)")
-    merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
-              [args.scene, "wet", args.law, CHUTE, n, args.restitution, args.stiffness_factor,
-               PEBBLES[args.scene], args.end_time, s["left"], f"{s['chute_flux']:.2f}",
-               f"{s['bed_flux']:.2f}", f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=7)
-    pebbleDischarge.plot([s], RESULTS / f"{case.name}.png",
-                         [f"{args.scene}, N = {n}, e = {args.restitution:g}, "
-                          f"factor {args.stiffness_factor:g}, {args.law}, wet"])
+    record_row(args, "wet", args.law, n, s, wall)
+    pebbleDischarge.plot([s], RESULTS / f"{case.name}.png", [f"{run_label(args, n)}, wet"])
 
 
 if __name__ == "__main__":
