@@ -2,7 +2,7 @@
 (shape triSurface): a box's surface moves as the box primitive, dry and in a
 liquid, also when the file's axes are not the box's (a full inertia tensor);
 a non-convex surface is refused by the exact pair overlap and runs with the
-grid overlap."""
+grid overlap; particles pass through a fixed obstacle of 'law none'."""
 
 import pathlib
 
@@ -11,6 +11,8 @@ import pytest
 
 from foamcase import Case
 from test_shapes import DRY_BOX, SPHERE_BOX, rotation, set_particles
+
+PAIRS = "contact/pairs"
 
 HERE = pathlib.Path(__file__).parent
 
@@ -183,6 +185,46 @@ def test_non_convex_surfaces_need_the_grid_overlap(tmp_path, foam_env):
     assert left[-1, 4] < 0.5*0.99
     momentum = left[:, 4:7] + right[:, 4:7]
     assert np.abs(momentum).max() < 1e-12
+
+
+def test_particles_pass_through_an_obstacle_of_law_none(tmp_path, foam_env):
+    """An L-shaped fixed obstacle (not convex, of material 'obstacle') in
+    the path of the dry box's head-on pair: with 'law none' towards the
+    particles it needs no contact formulas (exact overlap), no law with the
+    walls, and the spheres pass through it: their collision is the same to
+    the bit as without it. Without the entry the run stops, naming the two
+    materials and 'law none'."""
+    def head_on(name, obstacle):
+        case = Case.copy(DRY_BOX, tmp_path / name, foam_env)
+        case.run("blockMesh")
+        case.set("constant/g", "value", "(0 0 0)")
+        case.set("system/controlDict", "endTime", 0.004)
+        if obstacle:
+            write_stl(case.path / "constant" / "triSurface" / "ell.stl", *l_prism(0.0015))
+            case.set("constant/particleProperties", "particles/obstacle",
+                     '{ shape triSurface; file "ell.stl"; density 2500; motion fixed;'
+                     ' material obstacle; position (-0.003 0 0.01); }')
+        return case
+
+    alone = head_on("alone", obstacle=False)
+    alone.run("dlmDEMFoam")
+
+    refused = head_on("refused", obstacle=True)
+    result = refused.run("dlmDEMFoam", check=False)
+    assert result.returncode != 0
+    assert "No contact law for materials (particle obstacle)" in result.log
+    assert "law none" in result.log
+
+    passed = head_on("passed", obstacle=True)
+    passed.set("constant/particleProperties", f"{PAIRS}/particleObstacle",
+               "{ materials (particle obstacle); law none; }")
+    passed.run("dlmDEMFoam")
+    h, h0 = passed.history(), alone.history()
+    assert np.all(h["obstacle"][:, 1:10] == h["obstacle"][0, 1:10])
+    for name in ("left", "right"):
+        assert np.array_equal(h[name], h0[name])
+    # They met with the case's restitution 0.5
+    assert abs(h["left"][-1, 4] + 0.25) < 0.01
 
 
 def test_surface_particle_restarts_in_parallel_as_never_stopped(tmp_path, foam_env):

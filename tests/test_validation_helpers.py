@@ -90,7 +90,8 @@ def test_a_discharge_run_in_parts_counts_each_pebble_once(tmp_path):
     1.0 wrote the pebbles that left between 1.0 and 1.3 twice (in the
     directories 0 and 1); a second resume from 2.0 wrote its own directory.
     Each departure counts once, from the part that wrote it last, and so
-    does the history at the restart time."""
+    does the history at the restart time; an immersed wall's history (a
+    fixed particle) is no pebble's."""
     outlets = tmp_path / "postProcessing/particleOutlets"
     departures = {"0": [0.5, 0.9, 1.1, 1.25], "1": [1.1, 1.25, 1.6, 1.95, 2.2],
                   "2": [2.3, 2.8]}
@@ -107,9 +108,11 @@ def test_a_discharge_run_in_parts_counts_each_pebble_once(tmp_path):
         (particles / start).mkdir(parents=True)
         (particles / start / "particles.dat").write_text(
             "# time particle x y z Ux Uy Uz\n"
-            + "".join(f"{t} p0 0 0 {t} 0 0 0.1\n" for t in times))
+            + "".join(f"{t} pebbleBed_0 0 0 {t} 0 0 0.1\n{t} chuteTube 0 0 0.3 0 0 0\n"
+                      for t in times))
     times, names, rows = pebbleDischarge.history(tmp_path)
     assert list(times) == [0, 0.5, 1.0, 1.5, 2.0]
+    assert set(names) == {"pebbleBed_0"}
     assert list(rows[:, 2]) == [0, 0.5, 1.0, 1.5, 2.0]
 
 
@@ -122,3 +125,29 @@ def test_a_run_in_parts_takes_the_solvers_clock_of_every_part(tmp_path):
         "ExecutionTime = 3 s  ClockTime = 4 s\nExecutionTime = 6 s  ClockTime = 7 s\n"
         "ExecutionTime = 1 s  ClockTime = 1 s\nExecutionTime = 20 s  ClockTime = 21 s\n")
     assert validate_pebbleDischarge.solver_clock_times(tmp_path) == [10, 7, 21]
+
+
+def test_the_immersed_chute_is_a_closed_outward_tube_of_its_volume():
+    """The immersed chute's surface (validate_pebbleDischarge --chute
+    immersed): every edge on two triangles in opposite directions (closed,
+    consistently oriented), outward (positive volume by the divergence
+    theorem), the volume and centroid those of its polygonal tube."""
+    inner, outer, length, sides = 0.054, 0.066, 0.1, 16
+    text = validate_pebbleDischarge.tube_stl(inner, outer, length, sides)
+    vertices = np.array([[float(v) for v in line.split()[1:]]
+                         for line in text.splitlines() if line.startswith("vertex")])
+    triangles = vertices.reshape(-1, 3, 3)
+    keys = [tuple(np.round(p, 12)) for p in vertices]
+    edges = {}
+    for t in range(len(triangles)):
+        for k in range(3):
+            edge = (keys[3*t + k], keys[3*t + (k + 1) % 3])
+            edges[edge] = edges.get(edge, 0) + 1
+    assert all(n == 1 for n in edges.values())
+    assert all((b, a) in edges for a, b in edges)
+    a, b, c = triangles[:, 0], triangles[:, 1], triangles[:, 2]
+    signed = np.einsum("ij,ij->i", a, np.cross(b, c))/6
+    polygon_area = 0.5*sides*np.sin(2*np.pi/sides)
+    assert signed.sum() == pytest.approx(polygon_area*(outer**2 - inner**2)*length, rel=1e-9)
+    centroid = (signed[:, None]*(a + b + c)/4).sum(axis=0)/signed.sum()
+    assert centroid == pytest.approx([0, 0, length/2], abs=1e-12)

@@ -15,6 +15,8 @@ import numpy as np
 PAPER_BED_FLUX = 4.0
 PAPER_CHUTE_FLUX = 60.0
 PEBBLE_DENSITY = 843.0
+# The pebbles' names: those of the particles of constant/pebbleBed.dat
+PEBBLE_NAME = "pebbleBed_"
 
 
 def geometry(case_dir):
@@ -59,10 +61,14 @@ def outlet_record(case_dir):
 
 def history(case_dir):
     """Pebble history (every historyInterval steps): times, names and
-    positions (time, pebble, xyz) and velocities, from every start time."""
+    positions (time, pebble, xyz) and velocities, from every start time;
+    the pebbles are the particles of the bed's file (an immersed wall is a
+    particle too)."""
     times, names, rows = [], [], []
     for fields in restarted_rows(pathlib.Path(case_dir) / "postProcessing/particles",
                                  "particles.dat"):
+        if not fields[1].startswith(PEBBLE_NAME):
+            continue
         times.append(float(fields[0]))
         names.append(fields[1])
         rows.append([float(v) for v in fields[2:8]])

@@ -12,8 +12,9 @@ results/pebbleDischarge_<scene>_<N>_e<e>_k<factor>.png.
     validation/validate_pebbleDischarge.py [--scene reduced|full]
         [--medium wet|dry|both] [--liggghts] [--law overlapVolume|linear]
         [--end-time T] [--np 1] [--restitution e] [--stiffness-factor f]
-        [--resume] [N ...]  (default reduced, wet, overlapVolume, 6 s, N = 4,
-                             e 0.8, f 0.01)
+        [--chute castellated|immersed] [--resume] [N ...]
+        (default reduced, wet, overlapVolume, 6 s, N = 4, e 0.8, f 0.01,
+         castellated)
 
 --medium dry runs the same bed without water (the tutorial's Allrun.dry:
 dlmDEMFoam under buoyancy-reduced gravity; its rows have cellsPerDiameter
@@ -31,6 +32,14 @@ The paper's studies: its damping coefficients 0, 0.07 and 0.7 (of the
 critical damping; restitution exp(-pi z/sqrt(1 - z^2)) of a linear spring:
 1, 0.80 and 0.046) and stiffness factors from 1e-4 to 1e-1 (the stiffness
 over 2.85e11 N/m3, the Hertzian value at an overlap of 1 % of d).
+
+The chute's wall for the water: castellated (the tutorial's: baffles on
+the faces of box cells, half a cell outside the pebbles' contact surface
+on average) or --chute immersed: a fixed particle, a tube of the same mean
+inner radius and two cells thick given as a closed surface
+(constant/triSurface/chuteTube.stl), held at rest by the projection like
+any fixed particle, which the pebbles pass through for contacts (law none:
+the contact-only chute keeps them off it).
 
 The full scene's discharge lasts about 35 s: at N = 4 (370 000 cells) a
 few hours on 2 cores; --end-time gives its early rate sooner. --resume
@@ -64,10 +73,14 @@ FULL = {"R": 0.203, "coneBase": 0.39, "coneTop": 0.542, "outletZ": 0.642,
 PEBBLES = {"reduced": 250, "full": 2500}
 # The overlap-volume stiffness at stiffness factor 1 (constant/particleProperties)
 HERTZ_STIFFNESS = 2.85e11
-# The tutorial's chute: a tube of walls for the water (system/
-# topoSetDict.chute); rows of "open" are runs whose chute was a contact-only
-# surface, which the water passed
-CHUTE = "tube"
+# The chute's wall for the water, the column 'chute' of the results: the
+# tutorial's castellated tube (system/topoSetDict.chute) "tube", an
+# immersed one "immersed"; rows of "open" are runs whose chute was a
+# contact-only surface, which the water passed
+CHUTE = {"castellated": "tube", "immersed": "immersed"}
+# Sides of the immersed tube's polygons (its radius within 3e-4 of a
+# circle's)
+TUBE_SIDES = 128
 HEADER = ["scene", "medium", "law", "chute", "cellsPerDiameter", "restitution", "stiffnessFactor", "pebbles",
           "endTime", "left", "chuteFlux", "bedFlux", "balance", "wallTime"]
 
@@ -82,8 +95,83 @@ def linear_stiffness(factor, d, wall):
     return factor*HERTZ_STIFFNESS*volume/delta
 
 
-def make_case(scene, n, restitution, factor, law, medium):
-    case = RUNS / case_name(scene, n, restitution, factor, law, medium)
+def tube_stl(inner, outer, length, sides):
+    """A closed, outward-oriented triangulated tube (ASCII STL) about the
+    z axis from z = 0 to length."""
+    angles = 2*np.pi*np.arange(sides + 1)/sides
+    ring = np.stack([np.cos(angles), np.sin(angles)], axis=1)
+
+    def point(radius, k, z):
+        return (radius*ring[k, 0], radius*ring[k, 1], z)
+
+    triangles = []
+    for k in range(sides):
+        for radius, outward in ((outer, True), (inner, False)):
+            a, b = point(radius, k, 0), point(radius, k + 1, 0)
+            c, e = point(radius, k + 1, length), point(radius, k, length)
+            quad = [(a, b, c), (a, c, e)]
+            triangles += quad if outward else [(p, r, q) for p, q, r in quad]
+        for z, up in ((0, False), (length, True)):
+            a, b = point(inner, k, z), point(outer, k, z)
+            c, e = point(outer, k + 1, z), point(inner, k + 1, z)
+            quad = [(a, b, c), (a, c, e)]
+            triangles += quad if up else [(p, r, q) for p, q, r in quad]
+    lines = ["solid tube"]
+    for tri in triangles:
+        lines.append("facet normal 0 0 0\nouter loop")
+        lines += [f"vertex {x:.12g} {y:.12g} {z:.12g}" for x, y, z in tri]
+        lines.append("endloop\nendfacet")
+    lines.append("endsolid tube")
+    return "\n".join(lines) + "\n"
+
+
+def immerse_chute(case, n):
+    """The case's chute a fixed immersed tube instead of castellated
+    baffles: the same mean inner radius (r and half a cell), two cells
+    thick, from the cone's top to the outlet."""
+    g = pebbleDischarge.geometry(case)
+    h = g["d"]/n
+    inner = g["r"] + 0.5*h
+    length = g["outletZ"] - g["coneTop"]
+    surfaces = case / "constant/triSurface"
+    surfaces.mkdir(exist_ok=True)
+    (surfaces / "chuteTube.stl").write_text(tube_stl(inner, inner + 2*h, length, TUBE_SIDES))
+    # The fill (which includes the case's particles) stays the castellated
+    # case's: the same bed
+    fill = case / "fill/constant/particleProperties"
+    text, count = re.subn(r'^(#include "\.\./\.\./constant/particleProperties"\n)',
+                          r"\g<1>#remove particles\n", fill.read_text(), flags=re.M)
+    if count != 1:
+        raise SystemExit(f"{fill}: the include of the case's particles not found once")
+    fill.write_text(text)
+    pre = case / "Allrun.pre"
+    text = pre.read_text()
+    for line in (r"dlmSetEntries system/topoSetDict\.chute chuteRadius \\\n[^\n]*\n",
+                 r"topoSet -dict system/topoSetDict\.chute[^\n]*\n",
+                 r"createBaffles -overwrite[^\n]*\n"):
+        text, count = re.subn(line, "", text)
+        if count != 1:
+            raise SystemExit(f"{pre}: the chute's castellation ({line}) not found once")
+    pre.write_text(text)
+    props = case / "constant/particleProperties"
+    text = props.read_text()
+    tube = (
+        "// The chute's wall for the water: an immersed tube, fixed, which the\n"
+        "// pebbles pass through (the contact-only chute keeps them off it)\n"
+        "particles\n{\n    chuteTube\n    {\n"
+        "        shape       triSurface;\n        file        \"chuteTube.stl\";\n"
+        "        density     1000;\n        motion      fixed;\n"
+        "        material    chuteTube;\n"
+        f"        position    (0 0 {g['coneTop'] + 0.5*length:.12g});\n    }}\n}}\n\n")
+    text = text.replace("particleFile ", tube + "particleFile ", 1)
+    pairs = ("        pebbleTube\n        {\n            materials   (pebble chuteTube);\n"
+             "            law         none;\n        }\n")
+    text = re.sub(r"^(    pairs\n    \{\n)", rf"\g<1>{pairs}", text, count=1, flags=re.M)
+    props.write_text(text)
+
+
+def make_case(scene, n, restitution, factor, law, medium, chute="castellated"):
+    case = RUNS / case_name(scene, n, restitution, factor, law, medium, chute)
     if case.exists():
         shutil.rmtree(case)
     shutil.copytree(ROOT / "tutorials" / "pebbleDischarge", case,
@@ -118,12 +206,15 @@ def make_case(scene, n, restitution, factor, law, medium):
                             linear)
             text = text.replace(block, linear)
     props.write_text(text)
+    if chute == "immersed":
+        immerse_chute(case, n)
     return case
 
 
-def case_name(scene, n, restitution, factor, law, medium):
+def case_name(scene, n, restitution, factor, law, medium, chute="castellated"):
     return (f"pebbleDischarge_{scene}_{n}_e{restitution:g}_k{factor:g}"
-            + ("_linear" if law == "linear" else "") + ("_dry" if medium == "dry" else ""))
+            + ("_linear" if law == "linear" else "") + ("_dry" if medium == "dry" else "")
+            + ("_immersed" if chute == "immersed" else ""))
 
 
 def resume_command(case, end_time, n_procs):
@@ -154,13 +245,14 @@ def resume_command(case, end_time, n_procs):
 
 def run_label(args, n):
     return (f"{args.scene}, N = {n}, e = {args.restitution:g}, "
-            f"factor {args.stiffness_factor:g}, {args.law}")
+            f"factor {args.stiffness_factor:g}, {args.law}"
+            + (", immersed chute" if args.chute == "immersed" else ""))
 
 
 def record_row(args, medium, law, cells, s, wall):
     """The run's row in results/pebbleDischarge.csv."""
     merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
-              [args.scene, medium, law, CHUTE if medium == "wet" else "-", cells,
+              [args.scene, medium, law, CHUTE[args.chute] if medium == "wet" else "-", cells,
                args.restitution, args.stiffness_factor, PEBBLES[args.scene], args.end_time,
                s["left"], f"{s['chute_flux']:.2f}", f"{s['bed_flux']:.2f}",
                f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=7)
@@ -202,20 +294,23 @@ def main():
     parser.add_argument("--np", type=int, default=1)
     parser.add_argument("--restitution", type=float, default=0.8)
     parser.add_argument("--stiffness-factor", type=float, default=0.01)
+    parser.add_argument("--chute", choices=tuple(CHUTE), default="castellated")
     parser.add_argument("--resume", action="store_true")
     parser.add_argument("resolutions", nargs="*", type=int, default=[4])
     args = parser.parse_args()
     if args.resume and (args.medium != "wet" or args.liggghts):
         parser.error("--resume continues a wet run only")
+    if args.chute == "immersed" and args.medium != "wet":
+        parser.error("--chute immersed: a wall for the water, in a wet run only")
     env = foam_environment()
     for n in args.resolutions:
         if args.resume:
             case = RUNS / case_name(args.scene, n, args.restitution, args.stiffness_factor,
-                                    args.law, "wet")
+                                    args.law, "wet", args.chute)
             resume(case, n, args, env)
             continue
         case = make_case(args.scene, n, args.restitution, args.stiffness_factor, args.law,
-                         args.medium)
+                         args.medium, args.chute)
         label = run_label(args, n)
         runs = []
         if args.medium in ("wet", "both"):

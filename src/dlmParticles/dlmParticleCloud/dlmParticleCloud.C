@@ -392,6 +392,10 @@ void Foam::dlmParticleCloud::checkOverlaps() const
         const scalar upper = pi.position().x() + Ri;
         for (label b = a + 1; b < n && lower[order[b]] <= upper; ++b)
         {
+            if (contact_.valid() && contact_->passThrough(order[a], order[b]))
+            {
+                continue;
+            }
             const dlmParticle& pj = particles_[order[b]];
             const scalar Rj = pj.shape().boundingRadius();
             scalar depth = Ri + Rj - mag(pi.position() - pj.position());

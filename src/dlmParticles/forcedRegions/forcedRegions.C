@@ -174,30 +174,90 @@ void Foam::forcedRegions::exchangeAcross
 }
 
 
-void Foam::forcedRegions::markInsideCells()
+void Foam::forcedRegions::findNearDistances()
 {
     const dlmParticleCloud& cloud =
         mesh_.lookupObject<dlmParticleCloud>("particles");
     const PtrList<dlmParticle>& particles = cloud.particles();
     const vectorField& C = mesh_.C();
 
+    nearDistance_.setSize(particles.size());
+    nearNormal_.setSize(particles.size());
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        const labelUList& cells = cloud.nearCells(i);
+        scalarField& distance = nearDistance_[i];
+        vectorField& normal = nearNormal_[i];
+
+        const bool fixed = p.motion() == dlmParticle::motionType::fixed;
+        const word key
+        (
+            i < cloud.nParticles()
+          ? p.name()
+          : word(p.name() + ":image" + Foam::name(i - cloud.nParticles()))
+        );
+        if (fixed)
+        {
+            const auto iter = fixedNear_.cfind(key);
+            if
+            (
+                iter.found()
+             && iter().position == p.position()
+             && iter().orientation == p.orientation()
+             && iter().cells == cells
+            )
+            {
+                distance = iter().distance;
+                normal = iter().normal;
+                continue;
+            }
+        }
+
+        const tensor Rt(p.R().T());
+        distance.setSize(cells.size());
+        normal.setSize(cells.size());
+        forAll(cells, k)
+        {
+            distance[k] = p.shape().signedDistance
+            (
+                Rt & (C[cells[k]] - p.position()),
+                normal[k]
+            );
+        }
+        if (fixed)
+        {
+            fixedNear_.set
+            (
+                key,
+                fixedNear
+                {
+                    p.position(), p.orientation(), labelList(cells),
+                    distance, normal
+                }
+            );
+        }
+    }
+}
+
+
+void Foam::forcedRegions::markInsideCells()
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const PtrList<dlmParticle>& particles = cloud.particles();
+
     insideOf_ = -1;
     DynamicList<label> insideCells;
     forAll(particles, i)
     {
-        const dlmParticle& p = particles[i];
-        const tensor Rt(p.R().T());
-        vector normal;
-        for (const label celli : cloud.nearCells(i))
+        const labelUList& cells = cloud.nearCells(i);
+        forAll(cells, k)
         {
-            if
-            (
-                p.shape().signedDistance(Rt & (C[celli] - p.position()), normal)
-              < 0
-            )
+            if (nearDistance_[i][k] < 0)
             {
-                insideOf_[celli] = cloud.source(i);
-                insideCells.append(celli);
+                insideOf_[cells[k]] = cloud.source(i);
+                insideCells.append(cells[k]);
             }
         }
     }
@@ -369,11 +429,10 @@ void Foam::forcedRegions::findRegion(const label i)
     const scalar cellSizeMax = cloud.cellSizeMax();
 
     // Which candidates have their centre inside
-    for (const label celli : candidates)
+    const scalarField& distance = nearDistance_[i];
+    forAll(candidates, k)
     {
-        vector normal;
-        inside_[celli] =
-            shape.signedDistance(Rt & (C[celli] - X), normal) < 0;
+        inside_[candidates[k]] = distance[k] < 0;
     }
 
     // Neighbours of a cell across its faces: direction, sample, inside
@@ -387,8 +446,9 @@ void Foam::forcedRegions::findRegion(const label i)
     DynamicList<neighbourSample> nbrs(6);
 
     vector normal;
-    for (const label celli : candidates)
+    forAll(candidates, k)
     {
+        const label celli = candidates[k];
         if (inside_[celli])
         {
             cells.append(celli);
@@ -398,8 +458,7 @@ void Foam::forcedRegions::findRegion(const label i)
             continue;
         }
 
-        const scalar d0 = shape.signedDistance(Rt & (C[celli] - X), normal);
-        if (d0 >= cellSizeMax)
+        if (distance[k] >= cellSizeMax)
         {
             continue;
         }
@@ -453,8 +512,7 @@ void Foam::forcedRegions::findRegion(const label i)
         }
 
         // Normal at the surface point nearest to the cell centre
-        shape.signedDistance(Rt & (C[celli] - X), normal);
-        const vector n(p.R() & normal);
+        const vector n(p.R() & nearNormal_[i][k]);
 
         // One linear profile per grid line from the cell to an inside
         // neighbour, between the surface and the opposite neighbour
@@ -876,6 +934,12 @@ Foam::label Foam::forcedRegions::update()
     // A profile whose first sample is a cell left to the flow is linear;
     // those cells are known once the regions are, which are then found
     // again where one is sampled (the same cells, other weights)
+    // A changed mesh has other cells: no fixed particle's distances hold
+    if (mesh_.changing())
+    {
+        fixedNear_.clear();
+    }
+    findNearDistances();
     markInsideCells();
     label nSearches = 1;
     findRegions();

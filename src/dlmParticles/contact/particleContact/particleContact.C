@@ -34,7 +34,7 @@ void Foam::particleContact::readLaws()
     const label nParticleMaterials =
         particleMaterial_.empty() ? 0 : max(particleMaterial_) + 1;
     const label nM = materials_.size();
-    materialLaw_.setSize(nM*nM, -1);
+    materialLaw_.setSize(nM*nM, noLaw);
 
     const dictionary& pairsDict = dict_.subDict("pairs");
     const label nDims = cloud_.twoD() ? 2 : 3;
@@ -54,6 +54,22 @@ void Foam::particleContact::readLaws()
         if (a < 0 || b < 0)
         {
             // No particle or wall of this material: nothing to do
+            continue;
+        }
+
+        if (pairDict.get<word>("law") == "none")
+        {
+            checkKeywords
+            (
+                pairDict,
+                wordHashSet({"materials", "law"}),
+                "for contact pair " + e.keyword()
+            );
+            law(a, b) = noContact;
+            law(b, a) = noContact;
+            Info<< "Contact pair " << e.keyword() << " (" << names.first()
+                << ", " << names.second() << "): none (they pass through each"
+                << " other)" << endl;
             continue;
         }
 
@@ -100,24 +116,36 @@ void Foam::particleContact::readLaws()
             << newLaw.contactTime(ref.radius, ref.mass, 1) << " s" << endl;
     }
 
-    // Every pair of materials that may meet needs a law
+    // Every pair of materials that may meet needs a law: a free particle
+    // meets walls and particles; fixed and prescribed ones meet only free
+    // ones
     labelList nOfMaterial(nM, Zero);
-    for (const label a : particleMaterial_)
+    labelList nFreeOfMaterial(nM, Zero);
+    forAll(particles, i)
     {
-        ++nOfMaterial[a];
+        ++nOfMaterial[particleMaterial_[i]];
+        if (particles[i].isFree())
+        {
+            ++nFreeOfMaterial[particleMaterial_[i]];
+        }
     }
     for (label a = 0; a < nParticleMaterials; ++a)
     {
         for (label b = 0; b < nM; ++b)
         {
-            const bool mayMeet = a != b || nOfMaterial[a] > 1;
-            if (mayMeet && law(a, b) < 0)
+            const bool mayMeet =
+                b < nParticleMaterials
+              ? (a != b || nOfMaterial[a] > 1)
+             && (nFreeOfMaterial[a] > 0 || nFreeOfMaterial[b] > 0)
+              : nFreeOfMaterial[a] > 0;
+            if (mayMeet && law(a, b) == noLaw)
             {
                 FatalIOErrorInFunction(pairsDict)
                     << "No contact law for materials (" << materials_[a] << " "
                     << materials_[b] << "): add an entry with 'materials ("
                     << materials_[a] << " " << materials_[b] << ")' to"
-                    << " 'pairs'" << exit(FatalIOError);
+                    << " 'pairs' (with 'law none;' if they pass through each"
+                    << " other)" << exit(FatalIOError);
             }
         }
     }
@@ -182,6 +210,27 @@ Foam::vector Foam::particleContact::angularAcceleration
 }
 
 
+Foam::boolList Foam::particleContact::pairParticles() const
+{
+    const label nM = materials_.size();
+    boolList pairMaterial(nM, false);
+    for (const label b : particleMaterial_)
+    {
+        for (label a = 0; a < nM; ++a)
+        {
+            pairMaterial[a] =
+                pairMaterial[a] || materialLaw_[a*nM + b] >= 0;
+        }
+    }
+    boolList pairParticle(particleMaterial_.size());
+    forAll(particleMaterial_, i)
+    {
+        pairParticle[i] = pairMaterial[particleMaterial_[i]];
+    }
+    return pairParticle;
+}
+
+
 void Foam::particleContact::findCandidates
 (
     const scalar deltaT,
@@ -204,6 +253,21 @@ void Foam::particleContact::findCandidates
 
     // Skin: twice the largest displacement of the step, and the range of
     // lubrication
+    // Particles that may touch another particle (not an obstacle that every
+    // particle passes through, such as an immersed wall, which would set
+    // the bins' size)
+    const boolList pairParticle(pairParticles());
+    DynamicList<label> searched(n);
+    forAll(particles, i)
+    {
+        if (pairParticle[i])
+        {
+            searched.append(i);
+        }
+    }
+
+    // Skin: twice the largest displacement of the step, and the range of
+    // lubrication
     scalar maxSpeed = 0;
     scalar maxRadius = 0;
     scalar minRadius = GREAT;
@@ -218,19 +282,26 @@ void Foam::particleContact::findCandidates
           + mag(accel[i])*deltaT
           + max(mag(p.angularVelocity()), mag(p.angularVelocity0()))*R
         );
-        maxRadius = max(maxRadius, R);
         minRadius = min(minRadius, R);
+    }
+    for (const label i : searched)
+    {
+        maxRadius = max(maxRadius, particles[i].shape().boundingRadius());
     }
     const scalar skin =
         2*maxSpeed*deltaT + 0.01*minRadius
       + (lubricationViscosity_ > 0 ? lubricationRange_ : 0);
 
-    // Uniform bins of the particles' bounding box, side at least the
-    // largest interaction distance
+    // Uniform bins of the searched particles' bounding box, side at least
+    // the largest interaction distance
     boundBox bb;
-    for (const dlmParticle& p : particles)
+    for (const label i : searched)
     {
-        bb.add(p.position());
+        bb.add(particles[i].position());
+    }
+    if (searched.empty())
+    {
+        bb.add(point::zero);
     }
     const scalar binSize = 2*maxRadius + skin;
     Vector<label> nBins;
@@ -262,8 +333,8 @@ void Foam::particleContact::findCandidates
     };
     const label nTotal = nBins.x()*nBins.y()*nBins.z();
     labelList binStart(nTotal + 1, 0);
-    labelList binOfParticle(n);
-    forAll(particles, i)
+    labelList binOfParticle(n, -1);
+    for (const label i : searched)
     {
         const point& X = particles[i].position();
         binOfParticle[i] =
@@ -274,10 +345,10 @@ void Foam::particleContact::findCandidates
     {
         binStart[b + 1] += binStart[b];
     }
-    labelList sorted(n);
+    labelList sorted(searched.size());
     {
         labelList fill(SubList<label>(binStart, nTotal));
-        forAll(particles, i)
+        for (const label i : searched)
         {
             sorted[fill[binOfParticle[i]]++] = i;
         }
@@ -288,34 +359,46 @@ void Foam::particleContact::findCandidates
         const dlmParticle& pi = particles[i];
         const point& Xi = pi.position();
         const scalar Ri = pi.shape().boundingRadius();
-        const label bx = binOf(Xi, 0);
-        const label by = binOf(Xi, 1);
-        const label bz = binOf(Xi, 2);
 
-        for (label z = max(bz - 1, 0); z <= min(bz + 1, nBins.z() - 1); ++z)
-        for (label y = max(by - 1, 0); y <= min(by + 1, nBins.y() - 1); ++y)
-        for (label x = max(bx - 1, 0); x <= min(bx + 1, nBins.x() - 1); ++x)
+        // Pairs: the searched particles in the 27 bins around it
+        if (binOfParticle[i] >= 0)
         {
-            const label b = x + nBins.x()*(y + nBins.y()*z);
-            for (label k = binStart[b]; k < binStart[b + 1]; ++k)
+            const label bx = binOf(Xi, 0);
+            const label by = binOf(Xi, 1);
+            const label bz = binOf(Xi, 2);
+            const label zEnd = min(bz + 1, nBins.z() - 1);
+            const label yEnd = min(by + 1, nBins.y() - 1);
+            const label xEnd = min(bx + 1, nBins.x() - 1);
+
+            for (label z = max(bz - 1, 0); z <= zEnd; ++z)
+            for (label y = max(by - 1, 0); y <= yEnd; ++y)
+            for (label x = max(bx - 1, 0); x <= xEnd; ++x)
             {
-                const label j = sorted[k];
-                const dlmParticle& pj = particles[j];
-                if (j <= i || (!pi.isFree() && !pj.isFree()))
+                const label b = x + nBins.x()*(y + nBins.y()*z);
+                for (label k = binStart[b]; k < binStart[b + 1]; ++k)
                 {
-                    continue;
-                }
-                const scalar gap =
-                    mag(pj.position() - Xi) - Ri - pj.shape().boundingRadius();
-                if (gap < skin)
-                {
-                    pairs_.append(labelPair(i, j));
-                    pairLaws_.append
+                    const label j = sorted[k];
+                    const dlmParticle& pj = particles[j];
+                    const label pairLaw =
+                        law(particleMaterial_[i], particleMaterial_[j]);
+                    if
                     (
-                        law(particleMaterial_[i], particleMaterial_[j])
-                    );
-                    involved_[i] = true;
-                    involved_[j] = true;
+                        j <= i || (!pi.isFree() && !pj.isFree())
+                     || pairLaw == noContact
+                    )
+                    {
+                        continue;
+                    }
+                    const scalar gap =
+                        mag(pj.position() - Xi) - Ri
+                      - pj.shape().boundingRadius();
+                    if (gap < skin)
+                    {
+                        pairs_.append(labelPair(i, j));
+                        pairLaws_.append(pairLaw);
+                        involved_[i] = true;
+                        involved_[j] = true;
+                    }
                 }
             }
         }
@@ -326,15 +409,17 @@ void Foam::particleContact::findCandidates
         }
         forAll(walls_, w)
         {
+            const label wallLaw =
+                law(particleMaterial_[i], wallMaterial_[w]);
+            if (wallLaw == noContact)
+            {
+                continue;
+            }
             DynamicList<label> features;
             walls_[w].near(Xi, Ri + skin, features);
             if (features.size())
             {
-                wallCandidates_.append
-                (
-                    FixedList<label, 3>
-                    ({i, w, law(particleMaterial_[i], wallMaterial_[w])})
-                );
+                wallCandidates_.append(FixedList<label, 3>({i, w, wallLaw}));
                 wallFeatures_.append(features);
                 involved_[i] = true;
             }
@@ -988,7 +1073,7 @@ Foam::particleContact::particleContact
     lubricationViscosity_(0),
     lubricationRange_(cloud.cellSizeMax()),
     roughness_(0.01),
-    overlap_(overlapMethod::New(dict, cloud)),
+    overlap_(),
     evaluation_(0),
     correctionStep_(0),
     lastSubStep_(0),
@@ -1073,6 +1158,7 @@ Foam::particleContact::particleContact
     }
 
     readLaws();
+    overlap_ = overlapMethod::New(dict, cloud, pairParticles());
 
     // Tangential history of a restarted run
     if (state.found("contacts"))

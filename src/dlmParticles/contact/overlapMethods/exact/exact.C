@@ -26,19 +26,25 @@ namespace overlapMethods
 Foam::overlapMethods::exact::exact
 (
     const dictionary& dict,
-    const dlmParticleCloud& cloud
+    const dlmParticleCloud& cloud,
+    const boolList& pairParticles
 )
 :
     overlapMethod(cloud)
 {
     // Fail at start, not at the first contact, for shapes without formulas:
     // one particle of each shape type stands for the others
-    // (a type meets itself only if two particles have it)
+    // (a type meets itself only if two particles have it); particles that
+    // touch no other (an immersed wall) need none
     const PtrList<dlmParticle>& particles = cloud.particles();
     DynamicList<label> representatives;
     DynamicList<label> counts;
     forAll(particles, i)
     {
+        if (!pairParticles[i])
+        {
+            continue;
+        }
         label seen = -1;
         forAll(representatives, k)
         {
@@ -62,11 +68,11 @@ Foam::overlapMethods::exact::exact
         }
     }
     // The common-plane overlap takes the shapes as convex
-    if (particles.size() > 1)
+    if (sum(counts) > 1)
     {
         forAll(particles, i)
         {
-            if (!particles[i].shape().convex())
+            if (pairParticles[i] && !particles[i].shape().convex())
             {
                 FatalIOErrorInFunction(dict)
                     << "Particle " << particles[i].name() << " ("

@@ -26,7 +26,8 @@ namespace overlapMethods
 Foam::overlapMethods::grid::grid
 (
     const dictionary& dict,
-    const dlmParticleCloud& cloud
+    const dlmParticleCloud& cloud,
+    const boolList& pairParticles
 )
 :
     overlapMethod(cloud)

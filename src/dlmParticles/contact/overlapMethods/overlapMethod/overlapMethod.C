@@ -29,7 +29,8 @@ Foam::overlapMethod::overlapMethod(const dlmParticleCloud& cloud)
 Foam::autoPtr<Foam::overlapMethod> Foam::overlapMethod::New
 (
     const dictionary& dict,
-    const dlmParticleCloud& cloud
+    const dlmParticleCloud& cloud,
+    const boolList& pairParticles
 )
 {
     const word methodType(dict.getOrDefault<word>("overlap", "exact"));
@@ -47,7 +48,7 @@ Foam::autoPtr<Foam::overlapMethod> Foam::overlapMethod::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<overlapMethod>(cstrIter()(dict, cloud));
+    return autoPtr<overlapMethod>(cstrIter()(dict, cloud, pairParticles));
 }
 
 
