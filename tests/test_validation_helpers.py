@@ -1,9 +1,11 @@
 """Helpers of the validation scripts that carry physics: the conversion of
 drag correlations for random arrays of spheres to the DLM paper's Lambda,
 and the layered Ergun estimates of the anisotropic beds; the records of a
-run in parts; and the results tables' merge."""
+run in parts; the immersed chute's surface and case; and the results
+tables' merge."""
 
 import pathlib
+import re
 import sys
 
 import numpy as np
@@ -151,3 +153,23 @@ def test_the_immersed_chute_is_a_closed_outward_tube_of_its_volume():
     assert signed.sum() == pytest.approx(polygon_area*(outer**2 - inner**2)*length, rel=1e-9)
     centroid = (signed[:, None]*(a + b + c)/4).sum(axis=0)/signed.sum()
     assert centroid == pytest.approx([0, 0, length/2], abs=1e-12)
+
+
+def test_the_immersed_chute_replaces_the_castellated_one(tmp_path, monkeypatch):
+    """--chute immersed: the case's set-up makes no baffles, its particles
+    add the fixed tube that the pebbles pass through, and the fill (the
+    same bed as the castellated case's) leaves the tube out."""
+    monkeypatch.setattr(validate_pebbleDischarge, "RUNS", tmp_path)
+    case = validate_pebbleDischarge.make_case("reduced", 4, 0.8, 0.01, "overlapVolume", "wet",
+                                              "immersed")
+    assert case.name.endswith("_immersed")
+    pre = (case / "Allrun.pre").read_text()
+    commands = [line for line in pre.splitlines() if not line.lstrip().startswith("#")]
+    assert any(line.startswith("subsetMesh") for line in commands)
+    assert not [line for line in commands if "createBaffles" in line or "topoSetDict.chute" in line]
+    props = (case / "constant/particleProperties").read_text()
+    assert re.search(r"chuteTube\s*\{[^}]*motion\s+fixed;[^}]*material\s+chuteTube;", props)
+    assert re.search(r"materials\s+\(pebble chuteTube\);\s*law\s+none;", props)
+    assert (case / "constant/triSurface/chuteTube.stl").read_text().startswith("solid")
+    fill = (case / "fill/constant/particleProperties").read_text()
+    assert re.search(r'#include "\.\./\.\./constant/particleProperties"\n#remove particles\n', fill)
