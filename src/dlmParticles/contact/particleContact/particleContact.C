@@ -251,8 +251,6 @@ void Foam::particleContact::findCandidates
         return;
     }
 
-    // Skin: twice the largest displacement of the step, and the range of
-    // lubrication
     // Particles that may touch another particle (not an obstacle that every
     // particle passes through, such as an immersed wall, which would set
     // the bins' size)
