@@ -14,6 +14,8 @@ import numpy as np
 # in the chute
 PAPER_BED_FLUX = 4.0
 PAPER_CHUTE_FLUX = 60.0
+# The paper's reservoir: 406 mm across
+PAPER_BED_AREA = np.pi*0.203**2
 PEBBLE_DENSITY = 843.0
 # The pebbles' names: those of the particles of constant/pebbleBed.dat
 PEBBLE_NAME = "pebbleBed_"
@@ -235,13 +237,15 @@ def plot(results, output, labels=None):
 def report(case_dir, s):
     """The lines printed about a run."""
     start, end = s["balance_window"]
+    area_ratio = PAPER_BED_AREA/s["bed_area"]
+    paper_bed = (f" with {area_ratio:.1f} times this bed's area"
+                 if abs(area_ratio - 1) > 0.01 else "")
     return [
         f"Pebble discharge ({case_dir}): {s['left']} pebbles left",
         f"  chute flux {s['chute_flux']:.1f} kg/(m2 s) (paper, full scene: "
         f"{PAPER_CHUTE_FLUX:.0f}), rate {s['chute_rate']:.3f} kg/s",
         f"  bed flux   {s['bed_flux']:.1f} kg/(m2 s) through z = {s['z_section']:.3f} m"
-        f" (paper, full scene with 4 times the bed's area: {PAPER_BED_FLUX:.0f}),"
-        f" rate {s['bed_rate']:.3f} kg/s",
+        f" (paper, full scene{paper_bed}: {PAPER_BED_FLUX:.0f}), rate {s['bed_rate']:.3f} kg/s",
         f"  mass balance: bed rate {100*s['balance']:+.1f} % of the chute's over"
         f" {start:.2f} to {end:.2f} s, when both flow",
     ] + ([
