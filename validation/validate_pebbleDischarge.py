@@ -217,12 +217,18 @@ def case_name(scene, n, restitution, factor, law, medium, chute="castellated"):
             + ("_immersed" if chute == "immersed" else ""))
 
 
+def written_times(case):
+    """The times a run wrote (on its first rank if decomposed), ascending."""
+    parallel = (case / "processor0").is_dir()
+    return sorted(float(p.name) for p in (case / ("processor0" if parallel else ".")).iterdir()
+                  if re.fullmatch(r"[0-9.eE+-]+", p.name) and p.is_dir())
+
+
 def resume_command(case, end_time, n_procs):
     """The solver's command that continues a wet run from its latest
     written time to end_time (the endTime entry in controlDict.Allrun)."""
     parallel = (case / "processor0").is_dir()
-    written = sorted(float(p.name) for p in (case / ("processor0" if parallel else ".")).iterdir()
-                     if re.fullmatch(r"[0-9.eE+-]+", p.name) and p.is_dir())
+    written = written_times(case)
     if not written or written[-1] <= 0:
         raise SystemExit(f"{case}: nothing to resume (no written time after 0)")
     ranks = len(list(case.glob("processor[0-9]*")))
@@ -249,11 +255,13 @@ def run_label(args, n):
             + (", immersed chute" if args.chute == "immersed" else ""))
 
 
-def record_row(args, medium, law, cells, s, wall):
-    """The run's row in results/pebbleDischarge.csv."""
+def record_row(args, medium, law, cells, s, wall, end_time=None):
+    """The run's row in results/pebbleDischarge.csv (its end time that of
+    the arguments unless given: a run stopped early)."""
     merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
               [args.scene, medium, law, CHUTE[args.chute] if medium == "wet" else "-", cells,
-               args.restitution, args.stiffness_factor, PEBBLES[args.scene], args.end_time,
+               args.restitution, args.stiffness_factor, PEBBLES[args.scene],
+               args.end_time if end_time is None else end_time,
                s["left"], f"{s['chute_flux']:.2f}", f"{s['bed_flux']:.2f}",
                f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=7)
 
@@ -388,7 +396,10 @@ def resume(case, n, args, env):
     print("\n".join(pebbleDischarge.report(case, s)))
     print(f"  wall time  {wall:.0f} s: the solver's clock over {len(parts)} parts"
           f" ({', '.join(f'{p:.0f}' for p in parts)} s; without the set-up)")
-    record_row(args, "wet", args.law, n, s, wall)
+    # A part stopped by stopAt writeNow ends before --end-time
+    reached = written_times(case)[-1]
+    print(f"  reached    {reached:g} s of {args.end_time:g}")
+    record_row(args, "wet", args.law, n, s, wall, end_time=round(reached, 3))
     pebbleDischarge.plot([s], RESULTS / f"{case.name}.png", [f"{run_label(args, n)}, wet"])
 
 
