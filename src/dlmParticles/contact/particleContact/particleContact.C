@@ -218,8 +218,7 @@ Foam::boolList Foam::particleContact::pairParticles() const
     {
         for (label a = 0; a < nM; ++a)
         {
-            pairMaterial[a] =
-                pairMaterial[a] || materialLaw_[a*nM + b] >= 0;
+            pairMaterial[a] = pairMaterial[a] || law(a, b) >= 0;
         }
     }
     boolList pairParticle(particleMaterial_.size());
