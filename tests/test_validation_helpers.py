@@ -1,8 +1,8 @@
 """Helpers of the validation scripts that carry physics: the conversion of
 drag correlations for random arrays of spheres to the DLM paper's Lambda,
 and the layered Ergun estimates of the anisotropic beds; the records of a
-run in parts; the immersed chute's surface and case; and the results
-tables' merge."""
+run in parts; the immersed chute's surface and case; the rising pebble's
+reference and case; and the results tables' merge."""
 
 import pathlib
 import re
@@ -17,6 +17,7 @@ from common import (beetstra_drag, correlation_lambda, ergun_lambda,  # noqa: E4
 import pebbleDischarge  # noqa: E402
 import validate_anisotropicBed as anisotropic  # noqa: E402
 import validate_pebbleDischarge  # noqa: E402
+import validate_risingPebble as risingPebble  # noqa: E402
 
 
 @pytest.mark.parametrize("porosity", [0.36, 0.3983, 0.48])
@@ -173,3 +174,37 @@ def test_the_immersed_chute_replaces_the_castellated_one(tmp_path, monkeypatch):
     assert (case / "constant/triSurface/chuteTube.stl").read_text().startswith("solid")
     fill = (case / "fill/constant/particleProperties").read_text()
     assert re.search(r'#include "\.\./\.\./constant/particleProperties"\n#remove particles\n', fill)
+
+
+def test_the_rising_pebbles_reference_solves_the_force_balance():
+    """The unbounded terminal velocity balances the pebble's buoyancy less
+    its weight with the drag of Brown & Lawler's curve, whose coefficient
+    is about 0.4 at Re 9000 (Newton's regime); the wall factor of a box 10
+    diameters wide is a few per cent below 1 and tends to 1 as the box
+    widens."""
+    u = risingPebble.terminal_velocity()
+    re_number = u*risingPebble.D/risingPebble.NU
+    volume = np.pi/6*risingPebble.D**3
+    net = (risingPebble.RHO_F - risingPebble.RHO_S)*volume*risingPebble.G
+    drag = risingPebble.drag_coefficient(re_number)*0.5*risingPebble.RHO_F*u**2 \
+        * np.pi/4*risingPebble.D**2
+    assert drag == pytest.approx(net, rel=1e-12)
+    assert 0.39 < risingPebble.drag_coefficient(re_number) < 0.42
+    assert 8000 < re_number < 10000
+    assert 0.9 < risingPebble.wall_factor(u) < 0.97
+
+
+def test_the_rising_pebbles_case(tmp_path, monkeypatch):
+    """The case: a box of N cells per diameter with the pebble 2 diameters
+    above the floor, in water, with the discharge tutorial's schemes."""
+    monkeypatch.setattr(risingPebble, "RUNS", tmp_path)
+    case = risingPebble.make_case(4, 1, None)
+    assert (case.path / "constant/polyMesh/owner").exists()
+    header = (case.path / "constant/polyMesh/owner").read_text(errors="ignore")[:2000]
+    assert "nCells:" + str(40*40*96) in header.replace(" ", "")
+    props = (case.path / "constant/particleProperties").read_text()
+    assert "density     843.0;" in props
+    assert re.search(r"position\s+\(0\.1251 0\.1249 0\.05\);", props)
+    pebble = pathlib.Path(risingPebble.ROOT) / "tutorials/pebbleDischarge/system"
+    for name in ("fvSchemes", "fvSolution"):
+        assert (case.path / "system" / name).read_text() == (pebble / name).read_text()
