@@ -40,6 +40,7 @@ D, RHO_S, RHO_F, NU, G = 0.025, 843.0, 1000.0, 1e-6, 9.81
 WIDTH, HEIGHT, START = 10, 24, 2        # in diameters
 END_TIME, WINDOW = 1.4, 0.3
 START_WINDOW = 0.02
+RUN_PREFIX = "risingPebble_N"          # a run's folder in validation/runs: prefix and N
 
 
 def drag_coefficient(re_number):
@@ -69,7 +70,7 @@ def wall_factor(u):
 
 
 def make_case(n, ranks, env):
-    case = Case.copy(ROOT / "tutorials" / "tenCate", RUNS / f"risingPebble_N{n}", env)
+    case = Case.copy(ROOT / "tutorials" / "tenCate", RUNS / f"{RUN_PREFIX}{n}", env)
     pebble = ROOT / "tutorials" / "pebbleDischarge" / "system"
     for name in ("fvSchemes", "fvSolution"):
         (case.path / "system" / name).write_text((pebble / name).read_text())
@@ -117,6 +118,29 @@ nu      {NU!r};
     return case
 
 
+def plot_runs(env, reference, bounded):
+    """The rise velocity of every run kept in validation/runs against the
+    references: results/risingPebble.png."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6, 4))
+    runs = {int(run.name[len(RUN_PREFIX):]): run for run in RUNS.glob(f"{RUN_PREFIX}*")}
+    for n, run in sorted(runs.items()):
+        if not (run / "postProcessing").exists():
+            continue
+        h = Case(run, env).history()["pebble"]
+        ax.plot(h[:, 0], h[:, 6], label=f"N = {n}")
+    ax.axhline(reference, color="k", ls="--", label="Brown & Lawler, unbounded")
+    ax.axhline(bounded, color="k", ls=":", label="with Di Felice's wall factor")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("rise velocity [m/s]")
+    ax.set_title("One pebble rising in water (d 25 mm, 843 kg/m3)")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(RESULTS / "risingPebble.png", dpi=120)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--np", type=int, default=1)
@@ -155,24 +179,7 @@ def main():
               f"{added_mass_acceleration():.3f}); {len(t) - 1} steps, {seconds:.0f} s on "
               f"{args.np} rank(s)", flush=True)
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for run in sorted(RUNS.glob("risingPebble_N*"), key=lambda p: int(p.name[14:])):
-        if not (run / "postProcessing").exists():
-            continue
-        h = Case(run, env).history()["pebble"]
-        n = int(run.name[14:])
-        ax.plot(h[:, 0], h[:, 6], label=f"N = {n}")
-    ax.axhline(reference, color="k", ls="--", label="Brown & Lawler, unbounded")
-    ax.axhline(bounded, color="k", ls=":", label="with Di Felice's wall factor")
-    ax.set_xlabel("t [s]")
-    ax.set_ylabel("rise velocity [m/s]")
-    ax.set_title("One pebble rising in water (d 25 mm, 843 kg/m3)")
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(RESULTS / "risingPebble.png", dpi=120)
+    plot_runs(env, reference, bounded)
 
 
 if __name__ == "__main__":
