@@ -1384,6 +1384,10 @@ Foam::dlmParticleCloud::dlmParticleCloud
 
     readOutlets(state);
 
+    // The last step's change of speed sets the next step's particle Courant
+    // number: a restart takes it from the written state
+    state.readIfPresent("speedChange", speedChange_);
+
     checkOverlaps();
     if (contact_.valid())
     {
@@ -1733,6 +1737,11 @@ bool Foam::dlmParticleCloud::writeData(Ostream& os) const
             outlet.writeState(os);
         }
         os.endBlock();
+    }
+
+    if (speedChange_.size())
+    {
+        os.writeEntry("speedChange", speedChange_);
     }
 
     os.precision(oldPrecision);
