@@ -81,16 +81,24 @@ def test_heavy_sphere_is_stable_with_adjustable_time_step(tmp_path, foam_env):
 
 @pytest.mark.parametrize("ddt, adjust, fluid", [("Euler", "no", "viscous"),
                                                ("backward", "yes", "viscous"),
-                                               ("backward", "yes", "water")])
+                                               ("backward", "yes", "water"),
+                                               ("backward", "yes", "waterSlip")])
 def test_restart_continues_the_trajectory(tmp_path, foam_env, ddt, adjust, fluid):
     """In water the sphere's own Courant number sets the step, from its
     last change of speed, which the state written with each time keeps (a
-    restart without it took another step)."""
+    restart without it took another step). waterSlip: with
+    boundaryLayerSlip, whose targets depend on the flow beyond the
+    sphere's profile cells and on the time since the start (so the time
+    directories are named to full precision: a restart's clock starts
+    from the name)."""
     settings = {("system/fvSchemes", "ddtSchemes/default"): ddt,
                 ("system/controlDict", "adjustTimeStep"): adjust,
                 ("system/controlDict", "maxCo"): 0.1}
-    if fluid == "water":
+    if fluid.startswith("water"):
         settings[("constant/transportProperties", "nu")] = 1e-6
+    if fluid == "waterSlip":
+        settings[("system/fvOptions", "rigidProjection/boundaryLayerSlip")] = "true"
+        settings[("system/controlDict", "timePrecision")] = 17
     full = sphere_case(tmp_path, foam_env, "full", settings=settings)
     full.run("pimpleDLMFoam")
     first_write = full.times()[1]
@@ -110,13 +118,19 @@ def test_restart_continues_the_trajectory(tmp_path, foam_env, ddt, adjust, fluid
     assert np.abs(b[:, 0] - tail[:, 0]).max() < 1e-8*tail[-1, 0]
 
 
-@pytest.mark.parametrize("source", ["sphereBox", "fallingDisk"])
+@pytest.mark.parametrize("source", ["sphereBox", "fallingDisk", "sphereBoxSlip"])
 def test_parallel_matches_serial(tmp_path, foam_env, source):
+    """sphereBoxSlip: the sphere in water, where its viscous layer is
+    thinner than a cell, with boundaryLayerSlip: the profile cells' targets
+    then depend on the flow beyond them, across the processor boundary."""
     def make(name):
-        if source == "sphereBox":
+        if source.startswith("sphereBox"):
             case = Case.copy(SPHERE_BOX, tmp_path / name, foam_env)
             case.run("blockMesh")
             case.set("system/controlDict", "endTime", 0.05)
+            if source == "sphereBoxSlip":
+                case.set("constant/transportProperties", "nu", 1e-6)
+                case.set("system/fvOptions", "rigidProjection/boundaryLayerSlip", "true")
         else:
             case = Case.copy(DISK, tmp_path / name, foam_env)
             case.run("blockMesh")

@@ -6,6 +6,7 @@ reference and case; and the results tables' merge."""
 
 import pathlib
 import re
+import subprocess
 import sys
 
 import numpy as np
@@ -208,3 +209,22 @@ def test_the_rising_pebbles_case(tmp_path, monkeypatch):
     pebble = pathlib.Path(risingPebble.ROOT) / "tutorials/pebbleDischarge/system"
     for name in ("fvSchemes", "fvSolution"):
         assert (case.path / "system" / name).read_text() == (pebble / name).read_text()
+
+
+def test_boundary_layer_slip_is_set_in_the_discharge_and_the_rising_pebble(
+        tmp_path, monkeypatch, foam_env):
+    """--boundary-layer-slip: the runs' own folders, and the rigid
+    projection's fvOptions entry as the solver reads it."""
+    monkeypatch.setattr(validate_pebbleDischarge, "RUNS", tmp_path)
+    case = validate_pebbleDischarge.make_case("reduced", 4, 0.8, 0.01, "overlapVolume", "wet",
+                                              "castellated", True)
+    assert case.name.endswith("_slip")
+    monkeypatch.setattr(risingPebble, "RUNS", tmp_path)
+    rising = risingPebble.make_case(4, 1, foam_env, slip=True)
+    assert rising.path.name.endswith("_slip")
+    for folder in (case, rising.path):
+        value = subprocess.run(
+            ["foamDictionary", str(folder / "system/fvOptions"), "-entry",
+             "rigidProjection/boundaryLayerSlip", "-value"],
+            env=foam_env, capture_output=True, text=True, check=True).stdout.strip()
+        assert value == "true"

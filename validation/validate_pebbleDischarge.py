@@ -12,9 +12,9 @@ results/pebbleDischarge_<scene>_<N>_e<e>_k<factor>.png.
     validation/validate_pebbleDischarge.py [--scene reduced|full]
         [--medium wet|dry|both] [--liggghts] [--law overlapVolume|linear]
         [--end-time T] [--np 1] [--restitution e] [--stiffness-factor f]
-        [--chute castellated|immersed] [--resume] [N ...]
+        [--chute castellated|immersed] [--boundary-layer-slip] [--resume] [N ...]
         (default reduced, wet, overlapVolume, 6 s, N = 4, e 0.8, f 0.01,
-         castellated)
+         castellated, no-slip profiles)
 
 --medium dry runs the same bed without water (the tutorial's Allrun.dry:
 dlmDEMFoam under buoyancy-reduced gravity; its rows have cellsPerDiameter
@@ -40,6 +40,11 @@ inner radius and two cells thick given as a closed surface
 (constant/triSurface/chuteTube.stl), held at rest by the projection like
 any fixed particle, which the pebbles pass through for contacts (law none:
 the contact-only chute keeps them off it).
+
+--boundary-layer-slip sets the rigid projection's boundaryLayerSlip: a
+pebble's viscous layer (about d/100 at its Reynolds number of several
+thousand) is far thinner than a cell, and the profile cells' tangential
+velocity then follows the flow beyond them (validate_risingPebble.py).
 
 The full scene's discharge lasts about 35 s: at N = 4 (370 000 cells) a
 few hours on 2 cores; --end-time gives its early rate sooner. --resume
@@ -81,7 +86,7 @@ CHUTE = {"castellated": "tube", "immersed": "immersed"}
 # Sides of the immersed tube's polygons (its radius within 3e-4 of a
 # circle's)
 TUBE_SIDES = 128
-HEADER = ["scene", "medium", "law", "chute", "cellsPerDiameter", "restitution", "stiffnessFactor", "pebbles",
+HEADER = ["scene", "medium", "law", "chute", "boundaryLayerSlip", "cellsPerDiameter", "restitution", "stiffnessFactor", "pebbles",
           "endTime", "left", "chuteFlux", "bedFlux", "balance", "wallTime"]
 
 
@@ -170,8 +175,8 @@ def immerse_chute(case, n):
     props.write_text(text)
 
 
-def make_case(scene, n, restitution, factor, law, medium, chute="castellated"):
-    case = RUNS / case_name(scene, n, restitution, factor, law, medium, chute)
+def make_case(scene, n, restitution, factor, law, medium, chute="castellated", slip=False):
+    case = RUNS / case_name(scene, n, restitution, factor, law, medium, chute, slip)
     if case.exists():
         shutil.rmtree(case)
     shutil.copytree(ROOT / "tutorials" / "pebbleDischarge", case,
@@ -208,13 +213,18 @@ def make_case(scene, n, restitution, factor, law, medium, chute="castellated"):
     props.write_text(text)
     if chute == "immersed":
         immerse_chute(case, n)
+    if slip:
+        options = case / "system/fvOptions"
+        options.write_text(re.sub(r"^(\s+mixedCells\s+[^;]*;.*)$",
+                                  "\\g<1>\n    boundaryLayerSlip true;",
+                                  options.read_text(), count=1, flags=re.M))
     return case
 
 
-def case_name(scene, n, restitution, factor, law, medium, chute="castellated"):
+def case_name(scene, n, restitution, factor, law, medium, chute="castellated", slip=False):
     return (f"pebbleDischarge_{scene}_{n}_e{restitution:g}_k{factor:g}"
             + ("_linear" if law == "linear" else "") + ("_dry" if medium == "dry" else "")
-            + ("_immersed" if chute == "immersed" else ""))
+            + ("_immersed" if chute == "immersed" else "") + ("_slip" if slip else ""))
 
 
 def written_times(case):
@@ -252,18 +262,20 @@ def resume_command(case, end_time, n_procs):
 def run_label(args, n):
     return (f"{args.scene}, N = {n}, e = {args.restitution:g}, "
             f"factor {args.stiffness_factor:g}, {args.law}"
-            + (", immersed chute" if args.chute == "immersed" else ""))
+            + (", immersed chute" if args.chute == "immersed" else "")
+            + (", boundary-layer slip" if args.boundary_layer_slip else ""))
 
 
 def record_row(args, medium, law, cells, s, wall, end_time=None):
     """The run's row in results/pebbleDischarge.csv (its end time that of
     the arguments unless given: a run stopped early)."""
     merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
-              [args.scene, medium, law, CHUTE[args.chute] if medium == "wet" else "-", cells,
+              [args.scene, medium, law, CHUTE[args.chute] if medium == "wet" else "-",
+               int(args.boundary_layer_slip) if medium == "wet" else "-", cells,
                args.restitution, args.stiffness_factor, PEBBLES[args.scene],
                args.end_time if end_time is None else end_time,
                s["left"], f"{s['chute_flux']:.2f}", f"{s['bed_flux']:.2f}",
-               f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=7)
+               f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=8)
 
 
 def entry(path, keyword):
@@ -303,6 +315,7 @@ def main():
     parser.add_argument("--restitution", type=float, default=0.8)
     parser.add_argument("--stiffness-factor", type=float, default=0.01)
     parser.add_argument("--chute", choices=tuple(CHUTE), default="castellated")
+    parser.add_argument("--boundary-layer-slip", action="store_true")
     parser.add_argument("--resume", action="store_true")
     parser.add_argument("resolutions", nargs="*", type=int, default=[4])
     args = parser.parse_args()
@@ -310,15 +323,17 @@ def main():
         parser.error("--resume continues a wet run only")
     if args.chute == "immersed" and args.medium != "wet":
         parser.error("--chute immersed: a wall for the water, in a wet run only")
+    if args.boundary_layer_slip and args.medium != "wet":
+        parser.error("--boundary-layer-slip: the profile cells' flow, in a wet run only")
     env = foam_environment()
     for n in args.resolutions:
         if args.resume:
             case = RUNS / case_name(args.scene, n, args.restitution, args.stiffness_factor,
-                                    args.law, "wet", args.chute)
+                                    args.law, "wet", args.chute, args.boundary_layer_slip)
             resume(case, n, args, env)
             continue
         case = make_case(args.scene, n, args.restitution, args.stiffness_factor, args.law,
-                         args.medium, args.chute)
+                         args.medium, args.chute, args.boundary_layer_slip)
         label = run_label(args, n)
         runs = []
         if args.medium in ("wet", "both"):

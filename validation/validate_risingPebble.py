@@ -22,7 +22,13 @@ ratio (0.843) and Reynolds number (about 9000) may oscillate about its
 path (Horowitz & Williamson 2010), which lowers its mean rise by a few
 per cent. Writes results/risingPebble.csv and results/risingPebble.png.
 
-    validation/validate_risingPebble.py [--np 2] [N ...]   (default N = 4 6 8)
+--boundary-layer-slip runs with the rigid projection's boundaryLayerSlip
+(system/fvOptions): at this Reynolds number the viscous layer, about d/100
+thick, is far thinner than a cell, and the profile cells' tangential
+velocity then follows the flow beyond them instead of a no-slip profile.
+
+    validation/validate_risingPebble.py [--np 2] [--boundary-layer-slip] [N ...]
+        (default N = 4 6 8)
 """
 
 import argparse
@@ -33,14 +39,15 @@ import numpy as np
 from common import Case, RESULTS, ROOT, RUNS, foam_environment, merge_row, timed_run
 
 TABLE = RESULTS / "risingPebble.csv"
-HEADER = ["cellsPerDiameter", "ranks", "uRise", "drift", "uBrownLawler", "uWallCorrected",
+HEADER = ["boundaryLayerSlip", "cellsPerDiameter", "ranks", "uRise", "drift", "uBrownLawler", "uWallCorrected",
           "relErrorWallCorrected", "lateralOffset", "wallTime_s", "steps", "startAcceleration",
           "addedMassAcceleration"]
 D, RHO_S, RHO_F, NU, G = 0.025, 843.0, 1000.0, 1e-6, 9.81
 WIDTH, HEIGHT, START = 10, 24, 2        # in diameters
 END_TIME, WINDOW = 1.4, 0.3
 START_WINDOW = 0.02
-RUN_PREFIX = "risingPebble_N"          # a run's folder in validation/runs: prefix and N
+RUN_PREFIX = "risingPebble_N"          # a run's folder in validation/runs: prefix, N,
+SLIP_SUFFIX = "_slip"                   # and this suffix with boundaryLayerSlip
 
 
 def drag_coefficient(re_number):
@@ -69,8 +76,9 @@ def wall_factor(u):
     return ((1 - ratio)/(1 - 0.33*ratio))**exponent
 
 
-def make_case(n, ranks, env):
-    case = Case.copy(ROOT / "tutorials" / "tenCate", RUNS / f"{RUN_PREFIX}{n}", env)
+def make_case(n, ranks, env, slip=False):
+    case = Case.copy(ROOT / "tutorials" / "tenCate",
+                     RUNS / f"{RUN_PREFIX}{n}{SLIP_SUFFIX if slip else ''}", env)
     pebble = ROOT / "tutorials" / "pebbleDischarge" / "system"
     for name in ("fvSchemes", "fvSolution"):
         (case.path / "system" / name).write_text((pebble / name).read_text())
@@ -111,6 +119,8 @@ nu      {NU!r};
     for entry, value in {"endTime": END_TIME, "writeInterval": END_TIME,
                          "maxCo": 0.5, "maxDeltaT": 0.01}.items():
         case.set("system/controlDict", entry, value)
+    if slip:
+        case.set("system/fvOptions", "rigidProjection/boundaryLayerSlip", "true")
     case.run("blockMesh")
     if ranks > 1:
         case.set("system/decomposeParDict", "numberOfSubdomains", ranks)
@@ -125,18 +135,23 @@ def plot_runs(env, reference, bounded):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6, 4))
-    runs = {int(run.name[len(RUN_PREFIX):]): run for run in RUNS.glob(f"{RUN_PREFIX}*")}
-    for n, run in sorted(runs.items()):
+    runs = {}
+    for run in RUNS.glob(f"{RUN_PREFIX}*"):
+        label = run.name[len(RUN_PREFIX):]
+        slip = label.endswith(SLIP_SUFFIX)
+        runs[(slip, int(label[:-len(SLIP_SUFFIX)] if slip else label))] = run
+    for (slip, n), run in sorted(runs.items()):
         if not (run / "postProcessing").exists():
             continue
         h = Case(run, env).history()["pebble"]
-        ax.plot(h[:, 0], h[:, 6], label=f"N = {n}")
+        ax.plot(h[:, 0], h[:, 6], ls="-" if slip else "--",
+                label=f"N = {n}" + (", boundary-layer slip" if slip else ", no-slip"))
     ax.axhline(reference, color="k", ls="--", label="Brown & Lawler, unbounded")
     ax.axhline(bounded, color="k", ls=":", label="with Di Felice's wall factor")
     ax.set_xlabel("t [s]")
     ax.set_ylabel("rise velocity [m/s]")
     ax.set_title("One pebble rising in water (d 25 mm, 843 kg/m3)")
-    ax.legend()
+    ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(RESULTS / "risingPebble.png", dpi=120)
 
@@ -144,6 +159,7 @@ def plot_runs(env, reference, bounded):
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--np", type=int, default=1)
+    parser.add_argument("--boundary-layer-slip", action="store_true")
     parser.add_argument("resolutions", nargs="*", type=int, default=[4, 6, 8])
     args = parser.parse_args()
 
@@ -154,7 +170,8 @@ def main():
     print(f"Brown & Lawler: {reference:.4f} m/s (Re {reference*D/NU:.0f}); "
           f"in the box (Di Felice): {bounded:.4f} m/s", flush=True)
     for n in args.resolutions:
-        case = make_case(n, args.np, env)
+        slip = args.boundary_layer_slip
+        case = make_case(n, args.np, env, slip)
         seconds = timed_run(case, "pimpleDLMFoam", np=args.np)
         h = case.history()["pebble"]
         t, z = h[:, 0], h[:, 3]
@@ -170,10 +187,10 @@ def main():
         error = rise/bounded - 1
         start = np.searchsorted(t, START_WINDOW)
         acceleration = h[start, 6]/t[start]
-        merge_row(TABLE, HEADER, [n, args.np, rise, drift, reference, bounded, error,
+        merge_row(TABLE, HEADER, [int(slip), n, args.np, rise, drift, reference, bounded, error,
                                   lateral, seconds, len(t) - 1, acceleration,
-                                  added_mass_acceleration()], key_columns=1)
-        print(f"N={n:2d} rise {rise:.4f} m/s ({100*error:+.1f} % against the box's "
+                                  added_mass_acceleration()], key_columns=2)
+        print(f"N={n:2d}{' slip' if slip else ''} rise {rise:.4f} m/s ({100*error:+.1f} % against the box's "
               f"{bounded:.4f}), drift {100*drift:+.1f} %, lateral {lateral:.2f} d; start's "
               f"acceleration {acceleration:.3f} m/s2 (added mass: "
               f"{added_mass_acceleration():.3f}); {len(t) - 1} steps, {seconds:.0f} s on "

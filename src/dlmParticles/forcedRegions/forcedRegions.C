@@ -127,6 +127,7 @@ void Foam::forcedRegions::blendExcessMass()
             regionWeights_[i][k] = b + (1 - b)*regionWeights_[i][k];
             regionArms_[i][k] =
                 b*(C[celli] - p.position()) + (1 - b)*regionArms_[i][k];
+            regionRigidShares_[i][k] = b + (1 - b)*regionRigidShares_[i][k];
             for
             (
                 label s = sampleStarts_[i][k];
@@ -411,6 +412,8 @@ void Foam::forcedRegions::findRegion(const label i)
     DynamicList<label>& cells = regionCells_[i];
     DynamicList<scalar>& weights = regionWeights_[i];
     DynamicList<vector>& arms = regionArms_[i];
+    DynamicList<vector>& normals = regionNormals_[i];
+    DynamicList<scalar>& rigidShares = regionRigidShares_[i];
     DynamicList<label>& starts = sampleStarts_[i];
     DynamicList<label>& sampleCells = sampleCells_[i];
     DynamicList<labelPair>& sampleFaces = sampleFaces_[i];
@@ -418,6 +421,8 @@ void Foam::forcedRegions::findRegion(const label i)
     cells.clear();
     weights.clear();
     arms.clear();
+    normals.clear();
+    rigidShares.clear();
     starts.clear();
     sampleCells.clear();
     sampleFaces.clear();
@@ -454,6 +459,8 @@ void Foam::forcedRegions::findRegion(const label i)
             cells.append(celli);
             weights.append(1);
             arms.append(C[celli] - X);
+            normals.append(Zero);
+            rigidShares.append(1);
             starts.append(sampleCells.size());
             continue;
         }
@@ -630,6 +637,8 @@ void Foam::forcedRegions::findRegion(const label i)
             cells.append(celli);
             weights.append(a/weightSum);
             arms.append(q/weightSum);
+            normals.append(n);
+            rigidShares.append(0);
             starts.append(start);
             for (label k = start; k < sampleCoeffs.size(); ++k)
             {
@@ -698,6 +707,8 @@ void Foam::forcedRegions::resolveSharedCells()
             DynamicList<label>& cells = regionCells_[i];
             DynamicList<scalar>& weights = regionWeights_[i];
             DynamicList<vector>& arms = regionArms_[i];
+            DynamicList<vector>& normals = regionNormals_[i];
+            DynamicList<scalar>& rigidShares = regionRigidShares_[i];
             DynamicList<label>& starts = sampleStarts_[i];
             DynamicList<label>& sampleCells = sampleCells_[i];
             DynamicList<labelPair>& sampleFaces = sampleFaces_[i];
@@ -717,6 +728,8 @@ void Foam::forcedRegions::resolveSharedCells()
                 cells[nKept] = cells[k];
                 weights[nKept] = weights[k];
                 arms[nKept] = arms[k];
+                normals[nKept] = normals[k];
+                rigidShares[nKept] = rigidShares[k];
                 starts[nKept] = nSamples;
                 for (label s = first; s < last; ++s)
                 {
@@ -731,6 +744,8 @@ void Foam::forcedRegions::resolveSharedCells()
             cells.setSize(nKept);
             weights.setSize(nKept);
             arms.setSize(nKept);
+            normals.setSize(nKept);
+            rigidShares.setSize(nKept);
             starts.setSize(nKept + 1);
             sampleCells.setSize(nSamples);
             sampleFaces.setSize(nSamples);
@@ -926,6 +941,8 @@ Foam::label Foam::forcedRegions::update()
     regionCells_.setSize(nParticles);
     regionWeights_.setSize(nParticles);
     regionArms_.setSize(nParticles);
+    regionNormals_.setSize(nParticles);
+    regionRigidShares_.setSize(nParticles);
     sampleStarts_.setSize(nParticles);
     sampleCells_.setSize(nParticles);
     sampleFaces_.setSize(nParticles);

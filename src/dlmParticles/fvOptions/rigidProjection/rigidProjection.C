@@ -37,7 +37,8 @@ void Foam::fv::rigidProjection::checkKeywords(const dictionary& dict) const
     // <type>Coeffs sub-dictionary, which then holds the projection's own
     const wordHashSet own
     ({
-        "mixedCells", "forceRelaxation", "implicitHold", "gapBlending"
+        "mixedCells", "forceRelaxation", "implicitHold", "gapBlending",
+        "boundaryLayerSlip"
     });
     const word coeffsName(modelType_ + "Coeffs");
     wordHashSet known({"type", "libs", "active", "log", coeffsName});

@@ -48,6 +48,19 @@ namespace
         nVelocitySums = 6
     };
 
+    // and, with boundary-layer slip (per cell the rigid part A and the
+    // sampled part s' of the target a A U + A (Omega x q) + s'), the
+    // blocks of the balance, at each correction (the velocity sums then
+    // are sum m (u - s') and its moment)
+    enum slipSumIndex
+    {
+        sA11 = 6,           // sum m a A (9)
+        sA12 = 15,          // -sum m A [q]x (9)
+        sA21 = 24,          // sum m a [r]x A (9)
+        sA22 = 33,          // -sum m [r]x A [q]x (9)
+        nSlipSums = 36
+    };
+
     // Layout of the sums that remove the net force of the carried force
     enum restrictSumIndex
     {
@@ -355,6 +368,8 @@ Foam::fv::interpolated::interpolated
     forceRelaxation_(1),
     implicitHold_(10),
     gapBlending_(0),
+    boundaryLayerSlip_(false),
+    viscosity_(0),
     force_
     (
         IOobject
@@ -397,6 +412,13 @@ void Foam::fv::interpolated::read(const dictionary& coeffs)
     forceRelaxation_ = coeffs.getOrDefault<scalar>("forceRelaxation", 1);
     implicitHold_ = coeffs.getOrDefault<scalar>("implicitHold", 10);
     gapBlending_ = coeffs.getOrDefault<scalar>("gapBlending", 0);
+    boundaryLayerSlip_ = coeffs.getOrDefault<bool>("boundaryLayerSlip", false);
+    if (boundaryLayerSlip_)
+    {
+        const IOdictionary& transport =
+            mesh_.lookupObject<IOdictionary>("transportProperties");
+        viscosity_ = dimensionedScalar("nu", dimViscosity, transport).value();
+    }
     if (forceRelaxation_ < 0 || forceRelaxation_ > 1)
     {
         FatalIOErrorInFunction(coeffs)
@@ -527,17 +549,32 @@ void Foam::fv::interpolated::correct(volVectorField& U)
         const vector& omega
     ) -> vector
     {
-        return
-            regions_.weights()[i][k]*Up
-          + (omega ^ regions_.arms()[i][k])
-          + sampled[i][k];
+        const vector rigid
+        (
+            regions_.weights()[i][k]*Up + (omega ^ regions_.arms()[i][k])
+        );
+        if (boundaryLayerSlip_)
+        {
+            return (rigidParts_[i][k] & rigid) + slipSampled_[i][k];
+        }
+        return rigid + sampled[i][k];
     };
 
-    scalarList sums(nVelocitySums*particles.size(), Zero);
+    // With boundary-layer slip, the tangential target of a profile cell
+    // takes less of the rigid motion (rigid part A) and more of the flow
+    // beyond it, so the balance's blocks carry A and are summed at each
+    // correction
+    if (boundaryLayerSlip_)
+    {
+        setSlipParts(sampled);
+    }
+    const label nSums = nVelocitySums + (boundaryLayerSlip_ ? nSlipSums : 0);
+
+    scalarList sums(nSums*particles.size(), Zero);
     forAll(particles, i)
     {
         const point& X = particles[i].position();
-        scalar* s = &sums[nVelocitySums*i];
+        scalar* s = &sums[nSums*i];
 
         const DynamicList<label>& cells = regions_.cells()[i];
         forAll(cells, k)
@@ -545,10 +582,34 @@ void Foam::fv::interpolated::correct(volVectorField& U)
             const label celli = cells[k];
             const scalar m = rho[celli]*V[celli];
             const vector r(C[celli] - X);
-            const vector d(u[celli] - sampled[i][k]);
 
-            addVector(s + vB1, m*d);
-            addVector(s + vB2, m*(r ^ d));
+            if (boundaryLayerSlip_)
+            {
+                const tensor A(rigidParts_[i][k]);
+                const tensor qCross(crossMatrix(regions_.arms()[i][k]));
+                const scalar a = regions_.weights()[i][k];
+                const vector d(u[celli] - slipSampled_[i][k]);
+                addVector(s + vB1, m*d);
+                addTensor(s + sA11, m*a*A);
+                addTensor(s + sA12, -m*(A & qCross));
+
+                // The rotation from the normal parts of the profile cells
+                // (and the inside cells): their tangential parts follow
+                // the flow, and their angular momentum charged to the
+                // particle, with only its own interior's inertia left,
+                // spun a rising pebble up to 300 rad/s
+                const tensor Q(rotationParts_[i][k]);
+                const vector dRotation(Q & (u[celli] - sampled[i][k]));
+                addVector(s + vB2, m*(r ^ dRotation));
+                addTensor(s + sA21, m*a*(crossMatrix(r) & Q));
+                addTensor(s + sA22, -m*(crossMatrix(r) & Q & qCross));
+            }
+            else
+            {
+                const vector d(u[celli] - sampled[i][k]);
+                addVector(s + vB1, m*d);
+                addVector(s + vB2, m*(r ^ d));
+            }
         }
     }
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
@@ -578,7 +639,7 @@ void Foam::fv::interpolated::correct(volVectorField& U)
     {
         dlmParticle& p = particles[i];
         const scalar* g = &geometricSums_[nGeometricSums*i];
-        const scalar* s = &sums[nVelocitySums*i];
+        const scalar* s = &sums[nSums*i];
 
         // A held particle (a periodic image reaching just into the mesh,
         // say) may force no cell; a free one could not move
@@ -589,13 +650,27 @@ void Foam::fv::interpolated::correct(volVectorField& U)
 
         if (p.isFree())
         {
+            const tensor A11
+            (
+                boundaryLayerSlip_
+              ? sumTensor(s + sA11)
+              : g[gA11]*tensor::I
+            );
+            const tensor A22
+            (
+                boundaryLayerSlip_ ? sumTensor(s + sA22) : sumTensor(g + gA22)
+            );
             vector Up, omega;
             solveRigid
             (
-                g[gA11]*tensor::I,
-                -crossMatrix(sumVector(g + gMq)),
-                crossMatrix(sumVector(g + gMar)),
-                sumTensor(g + gA22),
+                A11,
+                boundaryLayerSlip_
+              ? sumTensor(s + sA12)
+              : -crossMatrix(sumVector(g + gMq)),
+                boundaryLayerSlip_
+              ? sumTensor(s + sA21)
+              : crossMatrix(sumVector(g + gMar)),
+                A22,
                 sumVector(s + vB1),
                 sumVector(s + vB2),
                 twoD,
@@ -605,12 +680,11 @@ void Foam::fv::interpolated::correct(volVectorField& U)
             p.setVelocities(Up, omega);
 
             // The mass and inertia the forced cells move with the particle
-            const tensor A22(sumTensor(g + gA22));
             const scalar ownInertia =
                 g[gInertia] + g[gInertia + 3] + g[gInertia + 5];
             p.setCoupledInertia
             (
-                g[gA11]/g[gMass],
+                boundaryLayerSlip_ ? tr(A11)/(3*g[gMass]) : g[gA11]/g[gMass],
                 twoD ? A22.zz()/g[gInertia + 5] : tr(A22)/ownInertia
             );
         }
@@ -652,6 +726,105 @@ void Foam::fv::interpolated::correct(volVectorField& U)
     removeNetForce();
 
     setLoads(gravity, rhoFluid, deltaT, twoD);
+}
+
+
+void Foam::fv::interpolated::setSlipParts(const List<vectorField>& sampled)
+{
+    const dlmParticleCloud& cloud =
+        mesh_.lookupObject<dlmParticleCloud>("particles");
+    const PtrList<dlmParticle>& particles = cloud.particles();
+    const vectorField& C = mesh_.C();
+    const scalar h = cloud.cellSizeMax();
+    const scalar age = max(mesh_.time().value(), 0);
+
+    // A particle lighter than its added mass (a sphere's: half the
+    // displaced fluid's; a cylinder's in 2D: all of it) keeps no-slip
+    // profiles: slipping, the fluid next to it is coupled to it only
+    // through the flow, a step late, and a sphere of a tenth of water's
+    // density rising with slip started to oscillate and blew up
+    const scalar addedMassRatio = cloud.twoD() ? 1 : 0.5;
+    const scalar rhoFluid = cloud.rhoFluid().value();
+
+    rigidParts_.setSize(particles.size());
+    rotationParts_.setSize(particles.size());
+    slipSampled_.setSize(particles.size());
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        const scalar length = 2*p.shape().boundingRadius();
+        const DynamicList<label>& cells = regions_.cells()[i];
+        symmTensorField& rigidPart = rigidParts_[i];
+        symmTensorField& rotationPart = rotationParts_[i];
+        vectorField& slipSampled = slipSampled_[i];
+        rigidPart.setSize(cells.size());
+        rotationPart.setSize(cells.size());
+        slipSampled = sampled[i];
+        if (p.mixtureDensity(rhoFluid) < addedMassRatio*rhoFluid)
+        {
+            rigidPart = symmTensor::I;
+            rotationPart = symmTensor::I;
+            if (!keptNoSlip_.found(p.name()))
+            {
+                keptNoSlip_.insert(p.name());
+                WarningInFunction
+                    << "boundaryLayerSlip of fvOption " << optionName_
+                    << ": particle " << p.name() << " (density "
+                    << p.mixtureDensity(rhoFluid) << ") is lighter than "
+                    << addedMassRatio << " times the fluid (its added mass):"
+                    << " it keeps no-slip profiles" << endl;
+            }
+            continue;
+        }
+        forAll(cells, k)
+        {
+            const scalar a = regions_.weights()[i][k];
+            if (a >= 1 || a <= 0)
+            {
+                rigidPart[k] = symmTensor::I;
+                rotationPart[k] = symmTensor::I;
+                continue;
+            }
+            const label celli = cells[k];
+            const symmTensor normalPart(sqr(regions_.normals()[i][k]));
+            const symmTensor tangentialPart(symmTensor::I - normalPart);
+
+            // The flow beyond the cell, extrapolated to it along the
+            // profile (whose samples' coefficients sum to 1 - a), slips
+            // along the surface at this speed
+            const vector outer(sampled[i][k]/(1 - a));
+            const scalar slipSpeed = mag
+            (
+                tangentialPart
+              & (
+                    outer - p.velocity()
+                  - (p.angularVelocity() ^ (C[celli] - p.position()))
+                )
+            );
+
+            // The no-slip share: 1 where the layer is a cell or thicker.
+            // The layer grows as sqrt(nu t) from the flow's start until
+            // the flow has passed the particle's length
+            const scalar layerTime =
+                slipSpeed*age > length ? length/slipSpeed : age;
+            const scalar noSlip =
+                viscosity_*layerTime >= sqr(h)
+              ? 1
+              : sqrt(viscosity_*layerTime)/h;
+
+            // The tangential target blends the no-slip profile's, by
+            // noSlip, with the slip's: the solid share b rigid, the rest
+            // the flow beyond, extrapolated to the cell
+            const scalar b = regions_.rigidShares()[i][k];
+            const scalar aTangential = b + noSlip*(a - b);
+            rigidPart[k] = normalPart + (aTangential/a)*tangentialPart;
+            rotationPart[k] =
+                normalPart + (b + (1 - b)*noSlip)*tangentialPart;
+            slipSampled[k] =
+                (normalPart & sampled[i][k])
+              + (1 - aTangential)*(tangentialPart & outer);
+        }
+    }
 }
 
 
@@ -828,8 +1001,14 @@ bool Foam::fv::interpolated::followContacts(vectorField& change) const
         const DynamicList<label>& cells = regions_.cells()[i];
         forAll(cells, k)
         {
+            const vector rigidChange
+            (
+                regions_.weights()[i][k]*dU + (dOmega ^ regions_.arms()[i][k])
+            );
             change[cells[k]] +=
-                regions_.weights()[i][k]*dU + (dOmega ^ regions_.arms()[i][k]);
+                boundaryLayerSlip_
+              ? (rigidParts_[i][k] & rigidChange)
+              : rigidChange;
         }
     }
     return changed;
