@@ -44,7 +44,8 @@ the contact-only chute keeps them off it).
 --boundary-layer-slip sets the rigid projection's boundaryLayerSlip: a
 pebble's viscous layer (about d/100 at its Reynolds number of several
 thousand) is far thinner than a cell, and the profile cells' tangential
-velocity then follows the flow beyond them (validate_risingPebble.py).
+velocity then follows the flow beyond them (validate_risingPebble.py; a
+coarse-mesh correction: it overshoots as the mesh refines).
 
 The full scene's discharge lasts about 35 s: at N = 4 (370 000 cells) a
 few hours on 2 cores; --end-time gives its early rate sooner. --resume

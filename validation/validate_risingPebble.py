@@ -25,7 +25,8 @@ per cent. Writes results/risingPebble.csv and results/risingPebble.png.
 --boundary-layer-slip runs with the rigid projection's boundaryLayerSlip
 (system/fvOptions): at this Reynolds number the viscous layer, about d/100
 thick, is far thinner than a cell, and the profile cells' tangential
-velocity then follows the flow beyond them instead of a no-slip profile.
+velocity then follows the flow beyond them instead of a no-slip profile
+(a coarse-mesh correction: it overshoots as the mesh refines).
 
     validation/validate_risingPebble.py [--np 2] [--boundary-layer-slip] [N ...]
         (default N = 4 6 8)

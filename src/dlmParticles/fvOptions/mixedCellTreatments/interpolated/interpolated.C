@@ -650,26 +650,32 @@ void Foam::fv::interpolated::correct(volVectorField& U)
 
         if (p.isFree())
         {
-            const tensor A11
-            (
-                boundaryLayerSlip_
-              ? sumTensor(s + sA11)
-              : g[gA11]*tensor::I
-            );
-            const tensor A22
-            (
-                boundaryLayerSlip_ ? sumTensor(s + sA22) : sumTensor(g + gA22)
-            );
+            // The balance's blocks: geometric, or with boundary-layer
+            // slip summed at this correction
+            scalar massRatio;
+            tensor A11, A12, A21, A22;
+            if (boundaryLayerSlip_)
+            {
+                A11 = sumTensor(s + sA11);
+                A12 = sumTensor(s + sA12);
+                A21 = sumTensor(s + sA21);
+                A22 = sumTensor(s + sA22);
+                massRatio = tr(A11)/(3*g[gMass]);
+            }
+            else
+            {
+                A11 = g[gA11]*tensor::I;
+                A12 = -crossMatrix(sumVector(g + gMq));
+                A21 = crossMatrix(sumVector(g + gMar));
+                A22 = sumTensor(g + gA22);
+                massRatio = g[gA11]/g[gMass];
+            }
             vector Up, omega;
             solveRigid
             (
                 A11,
-                boundaryLayerSlip_
-              ? sumTensor(s + sA12)
-              : -crossMatrix(sumVector(g + gMq)),
-                boundaryLayerSlip_
-              ? sumTensor(s + sA21)
-              : crossMatrix(sumVector(g + gMar)),
+                A12,
+                A21,
                 A22,
                 sumVector(s + vB1),
                 sumVector(s + vB2),
@@ -684,7 +690,7 @@ void Foam::fv::interpolated::correct(volVectorField& U)
                 g[gInertia] + g[gInertia + 3] + g[gInertia + 5];
             p.setCoupledInertia
             (
-                boundaryLayerSlip_ ? tr(A11)/(3*g[gMass]) : g[gA11]/g[gMass],
+                massRatio,
                 twoD ? A22.zz()/g[gInertia + 5] : tr(A22)/ownInertia
             );
         }
