@@ -228,3 +228,31 @@ def test_boundary_layer_slip_is_set_in_the_discharge_and_the_rising_pebble(
              "rigidProjection/boundaryLayerSlip", "-value"],
             env=foam_env, capture_output=True, text=True, check=True).stdout.strip()
         assert value == "true"
+
+
+def test_the_chute_length_sets_the_outlet_and_the_lid(tmp_path, monkeypatch, foam_env):
+    """--chute-length 8: the particle outlet 8 pebble diameters above the
+    cone's top, the lid a diameter above it, as the mesh, the castellated
+    tube and the contact walls read them (the full scene's cone)."""
+    monkeypatch.setattr(validate_pebbleDischarge, "RUNS", tmp_path)
+    case = validate_pebbleDischarge.make_case("full", 4, 0.8, 0.01, "overlapVolume", "wet",
+                                              chute_length=8)
+    assert case.name == "pebbleDischarge_full_4_e0.8_k0.01_chute8d"
+    g = pebbleDischarge.geometry(case)
+    assert g["coneTop"] == validate_pebbleDischarge.FULL["coneTop"]
+    assert g["outletZ"] == pytest.approx(g["coneTop"] + 8*g["d"], abs=1e-12)
+    assert g["lidZ"] == pytest.approx(g["outletZ"] + g["d"], abs=1e-12)
+    def expanded(dictionary):
+        return subprocess.run(["foamDictionary", str(case / dictionary), "-expand"], cwd=case,
+                              env=foam_env, capture_output=True, text=True, check=True).stdout
+
+    number = r"\(\s*0\s+0\s+([-0-9.eE]+)\s*\)"
+    chute = re.search(r"source cylinderToCell ;.*?p2 " + number, expanded("system/topoSetDict.chute"))
+    props = expanded("constant/particleProperties")
+    lid = re.search(r"\blid\s*\{[^}]*point\s+" + number, props)
+    outlet = re.search(r"chuteEnd\s*\{[^}]*point\s+" + number, props)
+    assert float(chute.group(1)) == pytest.approx(g["outletZ"], abs=1e-12)
+    assert float(outlet.group(1)) == pytest.approx(g["outletZ"], abs=1e-12)
+    assert float(lid.group(1)) == pytest.approx(g["lidZ"], abs=1e-12)
+    default = validate_pebbleDischarge.make_case("full", 4, 0.8, 0.01, "overlapVolume", "wet")
+    assert pebbleDischarge.geometry(default)["outletZ"] == validate_pebbleDischarge.FULL["outletZ"]

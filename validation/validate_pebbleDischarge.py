@@ -12,9 +12,10 @@ results/pebbleDischarge_<scene>_<N>_e<e>_k<factor>.png.
     validation/validate_pebbleDischarge.py [--scene reduced|full]
         [--medium wet|dry|both] [--liggghts] [--law overlapVolume|linear]
         [--end-time T] [--np 1] [--restitution e] [--stiffness-factor f]
-        [--chute castellated|immersed] [--boundary-layer-slip] [--resume] [N ...]
+        [--chute castellated|immersed] [--chute-length L]
+        [--boundary-layer-slip] [--resume] [N ...]
         (default reduced, wet, overlapVolume, 6 s, N = 4, e 0.8, f 0.01,
-         castellated, no-slip profiles)
+         castellated, 4 pebble diameters, no-slip profiles)
 
 --medium dry runs the same bed without water (the tutorial's Allrun.dry:
 dlmDEMFoam under buoyancy-reduced gravity; its rows have cellsPerDiameter
@@ -40,6 +41,13 @@ inner radius and two cells thick given as a closed surface
 (constant/triSurface/chuteTube.stl), held at rest by the projection like
 any fixed particle, which the pebbles pass through for contacts (law none:
 the contact-only chute keeps them off it).
+
+--chute-length L: the chute from the opening to the particle outlet, in
+pebble diameters (the tutorial's 4; the lid a diameter above its end). The
+paper does not give it, and in water it sets the rate: the stream in the
+tube is lighter than the water around it, so the longer the tube, the
+harder its column drives the water up it and back through the cone (an
+air-lift), and the faster the pebbles leave (validation/README.md).
 
 --boundary-layer-slip sets the rigid projection's boundaryLayerSlip: a
 pebble's viscous layer (about d/100 at its Reynolds number of several
@@ -87,7 +95,9 @@ CHUTE = {"castellated": "tube", "immersed": "immersed"}
 # Sides of the immersed tube's polygons (its radius within 3e-4 of a
 # circle's)
 TUBE_SIDES = 128
-HEADER = ["scene", "medium", "law", "chute", "boundaryLayerSlip", "cellsPerDiameter", "restitution", "stiffnessFactor", "pebbles",
+# The tutorial's chute, from the opening to the outlet, in pebble diameters
+CHUTE_LENGTH = 4
+HEADER = ["scene", "medium", "law", "chute", "chuteLength", "boundaryLayerSlip", "cellsPerDiameter", "restitution", "stiffnessFactor", "pebbles",
           "endTime", "left", "chuteFlux", "bedFlux", "balance", "wallTime"]
 
 
@@ -176,8 +186,24 @@ def immerse_chute(case, n):
     props.write_text(text)
 
 
-def make_case(scene, n, restitution, factor, law, medium, chute="castellated", slip=False):
-    case = RUNS / case_name(scene, n, restitution, factor, law, medium, chute, slip)
+def set_chute_length(case, length):
+    """The case's chute from the cone's top to the particle outlet length
+    pebble diameters long, the lid a diameter above its end."""
+    geometry = case / "constant/geometry"
+    text = geometry.read_text()
+    g = pebbleDischarge.geometry(case)
+    outlet = g["coneTop"] + length*g["d"]
+    for key, value in (("outletZ", outlet), ("lidZ", outlet + g["d"])):
+        text, count = re.subn(rf"^({key}\s+)[^;]*;", rf"\g<1>{value:.12g};", text, flags=re.M)
+        if count != 1:
+            raise SystemExit(f"{geometry}: {key} not found once")
+    geometry.write_text(text)
+
+
+def make_case(scene, n, restitution, factor, law, medium, chute="castellated", slip=False,
+              chute_length=CHUTE_LENGTH):
+    case = RUNS / case_name(scene, n, restitution, factor, law, medium, chute, slip,
+                            chute_length)
     if case.exists():
         shutil.rmtree(case)
     shutil.copytree(ROOT / "tutorials" / "pebbleDischarge", case,
@@ -191,6 +217,8 @@ def make_case(scene, n, restitution, factor, law, medium, chute="castellated", s
         for key, value in FULL.items():
             text = re.sub(rf"^({key}\s+)[^;]*;", rf"\g<1>{value};", text, flags=re.M)
         geometry.write_text(text)
+    if chute_length != CHUTE_LENGTH:
+        set_chute_length(case, chute_length)
     props = case / "constant/particleProperties"
     text = props.read_text()
     text = re.sub(r"^(\s+restitution\s+)[^;]*;", rf"\g<1>{restitution};", text, flags=re.M)
@@ -222,10 +250,13 @@ def make_case(scene, n, restitution, factor, law, medium, chute="castellated", s
     return case
 
 
-def case_name(scene, n, restitution, factor, law, medium, chute="castellated", slip=False):
+def case_name(scene, n, restitution, factor, law, medium, chute="castellated", slip=False,
+              chute_length=CHUTE_LENGTH):
     return (f"pebbleDischarge_{scene}_{n}_e{restitution:g}_k{factor:g}"
             + ("_linear" if law == "linear" else "") + ("_dry" if medium == "dry" else "")
-            + ("_immersed" if chute == "immersed" else "") + ("_slip" if slip else ""))
+            + ("_immersed" if chute == "immersed" else "")
+            + (f"_chute{chute_length:g}d" if chute_length != CHUTE_LENGTH else "")
+            + ("_slip" if slip else ""))
 
 
 def written_times(case):
@@ -264,6 +295,7 @@ def run_label(args, n):
     return (f"{args.scene}, N = {n}, e = {args.restitution:g}, "
             f"factor {args.stiffness_factor:g}, {args.law}"
             + (", immersed chute" if args.chute == "immersed" else "")
+            + (f", chute {args.chute_length:g} d" if args.chute_length != CHUTE_LENGTH else "")
             + (", boundary-layer slip" if args.boundary_layer_slip else ""))
 
 
@@ -272,11 +304,12 @@ def record_row(args, medium, law, cells, s, wall, end_time=None):
     the arguments unless given: a run stopped early)."""
     merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
               [args.scene, medium, law, CHUTE[args.chute] if medium == "wet" else "-",
+               f"{args.chute_length:g}",
                int(args.boundary_layer_slip) if medium == "wet" else "-", cells,
                args.restitution, args.stiffness_factor, PEBBLES[args.scene],
                args.end_time if end_time is None else end_time,
                s["left"], f"{s['chute_flux']:.2f}", f"{s['bed_flux']:.2f}",
-               f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=8)
+               f"{s['balance']:.4f}", f"{wall:.0f}"], key_columns=9)
 
 
 def entry(path, keyword):
@@ -316,6 +349,7 @@ def main():
     parser.add_argument("--restitution", type=float, default=0.8)
     parser.add_argument("--stiffness-factor", type=float, default=0.01)
     parser.add_argument("--chute", choices=tuple(CHUTE), default="castellated")
+    parser.add_argument("--chute-length", type=float, default=CHUTE_LENGTH)
     parser.add_argument("--boundary-layer-slip", action="store_true")
     parser.add_argument("--resume", action="store_true")
     parser.add_argument("resolutions", nargs="*", type=int, default=[4])
@@ -330,11 +364,13 @@ def main():
     for n in args.resolutions:
         if args.resume:
             case = RUNS / case_name(args.scene, n, args.restitution, args.stiffness_factor,
-                                    args.law, "wet", args.chute, args.boundary_layer_slip)
+                                    args.law, "wet", args.chute, args.boundary_layer_slip,
+                                    args.chute_length)
             resume(case, n, args, env)
             continue
         case = make_case(args.scene, n, args.restitution, args.stiffness_factor, args.law,
-                         args.medium, args.chute, args.boundary_layer_slip)
+                         args.medium, args.chute, args.boundary_layer_slip,
+                         args.chute_length)
         label = run_label(args, n)
         runs = []
         if args.medium in ("wet", "both"):
