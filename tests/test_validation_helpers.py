@@ -4,6 +4,7 @@ and the layered Ergun estimates of the anisotropic beds; the records of a
 run in parts; the immersed chute's surface and case; the rising pebble's
 reference and case; and the results tables' merge."""
 
+import argparse
 import pathlib
 import re
 import subprocess
@@ -256,3 +257,23 @@ def test_the_chute_length_sets_the_outlet_and_the_lid(tmp_path, monkeypatch, foa
     assert float(lid.group(1)) == pytest.approx(g["lidZ"], abs=1e-12)
     default = validate_pebbleDischarge.make_case("full", 4, 0.8, 0.01, "overlapVolume", "wet")
     assert pebbleDischarge.geometry(default)["outletZ"] == validate_pebbleDischarge.FULL["outletZ"]
+
+
+def test_a_discharge_row_merges_into_the_stored_results(tmp_path, monkeypatch):
+    """The script's columns are those of results/pebbleDischarge.csv, and a
+    run's row (here a chute of 8 diameters) goes in beside the stored
+    rows, which stay as they were."""
+    stored = pathlib.Path(validate_pebbleDischarge.RESULTS) / "pebbleDischarge.csv"
+    (tmp_path / "pebbleDischarge.csv").write_text(stored.read_text())
+    monkeypatch.setattr(validate_pebbleDischarge, "RESULTS", tmp_path)
+    args = argparse.Namespace(scene="full", chute="castellated", chute_length=8.0,
+                              boundary_layer_slip=False, restitution=0.8,
+                              stiffness_factor=0.01, end_time=6.0)
+    s = {"left": 313, "chute_flux": 59.1, "bed_flux": 3.6, "balance": -0.072}
+    validate_pebbleDischarge.record_row(args, "wet", "overlapVolume", 4, s, 2519)
+    old = stored.read_text().splitlines()
+    new = (tmp_path / "pebbleDischarge.csv").read_text().splitlines()
+    assert new[0] == ",".join(validate_pebbleDischarge.HEADER) == old[0]
+    assert len(new) == len(old) + 1
+    added = [line for line in new if line not in old]
+    assert len(added) == 1 and added[0].startswith("full,wet,overlapVolume,tube,8.0,0,4,")

@@ -304,7 +304,7 @@ def record_row(args, medium, law, cells, s, wall, end_time=None):
     the arguments unless given: a run stopped early)."""
     merge_row(RESULTS / "pebbleDischarge.csv", HEADER,
               [args.scene, medium, law, CHUTE[args.chute] if medium == "wet" else "-",
-               f"{args.chute_length:g}",
+               args.chute_length,
                int(args.boundary_layer_slip) if medium == "wet" else "-", cells,
                args.restitution, args.stiffness_factor, PEBBLES[args.scene],
                args.end_time if end_time is None else end_time,
