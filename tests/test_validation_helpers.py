@@ -15,7 +15,7 @@ import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "validation"))
 from common import (beetstra_drag, correlation_lambda, ergun_lambda,  # noqa: E402
-                    merge_row, tang_drag)
+                    merge_row, stored_rows, tang_drag)
 import pebbleDischarge  # noqa: E402
 import validate_anisotropicBed as anisotropic  # noqa: E402
 import validate_pebbleDischarge  # noqa: E402
@@ -261,8 +261,8 @@ def test_the_chute_length_sets_the_outlet_and_the_lid(tmp_path, monkeypatch, foa
 
 def test_a_discharge_row_merges_into_the_stored_results(tmp_path, monkeypatch):
     """The script's columns are those of results/pebbleDischarge.csv, and a
-    run's row (here a chute of 8 diameters) goes in beside the stored
-    rows, which stay as they were."""
+    run's row (here a chute of 8 diameters) replaces a stored row of the
+    same parameters and leaves the others as they were."""
     stored = pathlib.Path(validate_pebbleDischarge.RESULTS) / "pebbleDischarge.csv"
     (tmp_path / "pebbleDischarge.csv").write_text(stored.read_text())
     monkeypatch.setattr(validate_pebbleDischarge, "RESULTS", tmp_path)
@@ -271,9 +271,12 @@ def test_a_discharge_row_merges_into_the_stored_results(tmp_path, monkeypatch):
                               stiffness_factor=0.01, end_time=6.0)
     s = {"left": 313, "chute_flux": 59.1, "bed_flux": 3.6, "balance": -0.072}
     validate_pebbleDischarge.record_row(args, "wet", "overlapVolume", 4, s, 2519)
-    old = stored.read_text().splitlines()
-    new = (tmp_path / "pebbleDischarge.csv").read_text().splitlines()
-    assert new[0] == ",".join(validate_pebbleDischarge.HEADER) == old[0]
-    assert len(new) == len(old) + 1
-    added = [line for line in new if line not in old]
-    assert len(added) == 1 and added[0].startswith("full,wet,overlapVolume,tube,8.0,0,4,")
+    header = ",".join(validate_pebbleDischarge.HEADER)
+    assert stored.read_text().split("\n", 1)[0] == header
+    assert (tmp_path / "pebbleDischarge.csv").read_text().split("\n", 1)[0] == header
+    key = ["full", "wet", "overlapVolume", "tube", 8.0, 0.0, 4.0, 0.8, 0.01]
+    old = [r for r in stored_rows(stored) if r[:9] != key]
+    new = stored_rows(tmp_path / "pebbleDischarge.csv")
+    added = [r for r in new if r[:9] == key]
+    assert len(added) == 1 and added[0][9:] == [2500, 6.0, 313, 59.1, 3.6, -0.072, 2519]
+    assert [r for r in new if r[:9] != key] == old
