@@ -280,3 +280,13 @@ def test_a_discharge_row_merges_into_the_stored_results(tmp_path, monkeypatch):
     added = [r for r in new if r[:9] == key]
     assert len(added) == 1 and added[0][9:] == [2500, 6.0, 313, 59.1, 3.6, -0.072, 2519]
     assert [r for r in new if r[:9] != key] == old
+
+
+def test_a_chute_shorter_than_a_pebble_is_refused():
+    """--chute-length below one diameter: a clear error before any case is
+    made."""
+    script = pathlib.Path(validate_pebbleDischarge.__file__)
+    result = subprocess.run([sys.executable, str(script), "--chute-length", "0.5"],
+                            capture_output=True, text=True)
+    assert result.returncode == 2
+    assert "--chute-length 0.5: the chute must be at least a pebble diameter long" in result.stderr

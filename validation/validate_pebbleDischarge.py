@@ -354,6 +354,9 @@ def main():
     parser.add_argument("--resume", action="store_true")
     parser.add_argument("resolutions", nargs="*", type=int, default=[4])
     args = parser.parse_args()
+    if args.chute_length < 1:
+        parser.error(f"--chute-length {args.chute_length:g}: the chute must be at least a"
+                     " pebble diameter long (the outlet beyond the opening)")
     if args.resume and (args.medium != "wet" or args.liggghts):
         parser.error("--resume continues a wet run only")
     if args.chute == "immersed" and args.medium != "wet":
