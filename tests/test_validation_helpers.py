@@ -243,6 +243,7 @@ def test_the_chute_length_sets_the_outlet_and_the_lid(tmp_path, monkeypatch, foa
     assert g["coneTop"] == validate_pebbleDischarge.FULL["coneTop"]
     assert g["outletZ"] == pytest.approx(g["coneTop"] + 8*g["d"], abs=1e-12)
     assert g["lidZ"] == pytest.approx(g["outletZ"] + g["d"], abs=1e-12)
+
     def expanded(dictionary):
         return subprocess.run(["foamDictionary", str(case / dictionary), "-expand"], cwd=case,
                               env=foam_env, capture_output=True, text=True, check=True).stdout

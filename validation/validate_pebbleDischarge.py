@@ -186,18 +186,23 @@ def immerse_chute(case, n):
     props.write_text(text)
 
 
-def set_chute_length(case, length):
-    """The case's chute from the cone's top to the particle outlet length
-    pebble diameters long, the lid a diameter above its end."""
+def set_geometry(case, values):
+    """Entries of the case's constant/geometry (lengths in m) set to values."""
     geometry = case / "constant/geometry"
     text = geometry.read_text()
-    g = pebbleDischarge.geometry(case)
-    outlet = g["coneTop"] + length*g["d"]
-    for key, value in (("outletZ", outlet), ("lidZ", outlet + g["d"])):
+    for key, value in values.items():
         text, count = re.subn(rf"^({key}\s+)[^;]*;", rf"\g<1>{value:.12g};", text, flags=re.M)
         if count != 1:
             raise SystemExit(f"{geometry}: {key} not found once")
     geometry.write_text(text)
+
+
+def set_chute_length(case, length):
+    """The case's chute from the cone's top to the particle outlet length
+    pebble diameters long, the lid a diameter above its end."""
+    g = pebbleDischarge.geometry(case)
+    outlet = g["coneTop"] + length*g["d"]
+    set_geometry(case, {"outletZ": outlet, "lidZ": outlet + g["d"]})
 
 
 def make_case(scene, n, restitution, factor, law, medium, chute="castellated", slip=False,
@@ -212,11 +217,7 @@ def make_case(scene, n, restitution, factor, law, medium, chute="castellated", s
                                                   "*.Allrun", "pebbleBed.dat",
                                                   "lattice.dat", "render"))
     if scene == "full":
-        geometry = case / "constant/geometry"
-        text = geometry.read_text()
-        for key, value in FULL.items():
-            text = re.sub(rf"^({key}\s+)[^;]*;", rf"\g<1>{value};", text, flags=re.M)
-        geometry.write_text(text)
+        set_geometry(case, FULL)
     if chute_length != CHUTE_LENGTH:
         set_chute_length(case, chute_length)
     props = case / "constant/particleProperties"
