@@ -276,7 +276,9 @@ def test_wet_head_on_collision_is_symmetric_and_rebounds(tmp_path, foam_env):
     """Two spheres launched at each other along z at 0.1 m/s, placed
     symmetrically in the box: they keep their speed at the start, collide
     through the lubrication film and part again, mirror images of each
-    other."""
+    other (to round-off, which the collision amplifies to about 1e-6 of the
+    speed: 0.9e-6 with the carried force left on the cells, 1.2e-6 with it
+    following the particles)."""
     def edit(case):
         props = case.path / "constant" / "particleProperties"
         props.write_text(props.read_text().replace(
@@ -306,7 +308,7 @@ contact
     lower, upper = h["sphere"], h["upper"]
     assert lower[0, 6] > 0.99*0.1 and upper[0, 6] < -0.99*0.1
     # Mirror images about the box's mid-height
-    assert np.abs(lower[:, 6] + upper[:, 6]).max() < 1e-6*0.1
+    assert np.abs(lower[:, 6] + upper[:, 6]).max() < 3e-6*0.1
     assert np.abs(lower[:, 3] + upper[:, 3] - 0.045).max() < 1e-8
     # They touched and parted
     assert np.abs(lower[:, 18]).max() > 0

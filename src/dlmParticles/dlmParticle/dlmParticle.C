@@ -26,7 +26,8 @@ void Foam::dlmParticle::checkKeywords(const dictionary& dict) const
     ({
         "shape", "density", "position", "velocity", "angularVelocity",
         "orientation", "motion", "velocity0", "angularVelocity0", "force",
-        "torque", "material", "contactForce", "contactTorque"
+        "torque", "material", "contactForce", "contactTorque",
+        "stepDisplacement", "stepRotation"
     });
     known.insert(shape_->keywords());
 
@@ -64,6 +65,11 @@ Foam::dlmParticle::dlmParticle(const dictionary& dict)
     torque_(dict.getOrDefault<vector>("torque", Zero)),
     contactForce_(dict.getOrDefault<vector>("contactForce", Zero)),
     contactTorque_(dict.getOrDefault<vector>("contactTorque", Zero)),
+    stepDisplacement_(dict.getOrDefault<vector>("stepDisplacement", Zero)),
+    stepRotation_
+    (
+        dict.getOrDefault<quaternion>("stepRotation", quaternion::I)
+    ),
     coupledMassRatio_(1),
     coupledInertiaRatio_(1),
     steadyFreeSpin_(false)
@@ -140,6 +146,8 @@ Foam::dlmParticle::dlmParticle(const dlmParticle& p)
     torque_(p.torque_),
     contactForce_(p.contactForce_),
     contactTorque_(p.contactTorque_),
+    stepDisplacement_(p.stepDisplacement_),
+    stepRotation_(p.stepRotation_),
     coupledMassRatio_(p.coupledMassRatio_),
     coupledInertiaRatio_(p.coupledInertiaRatio_),
     steadyFreeSpin_(p.steadyFreeSpin_)
@@ -281,6 +289,8 @@ void Foam::dlmParticle::write(Ostream& os) const
     os.writeEntry("torque", torque_);
     os.writeEntry("contactForce", contactForce_);
     os.writeEntry("contactTorque", contactTorque_);
+    os.writeEntry("stepDisplacement", stepDisplacement_);
+    os.writeEntry("stepRotation", stepRotation_);
     os.endBlock();
 }
 

@@ -1482,10 +1482,14 @@ void Foam::dlmParticleCloud::move()
     // change of its surface speed
     vectorField startVelocity(particles_.size());
     vectorField startOmega(particles_.size());
+    pointField startPosition(particles_.size());
+    List<quaternion> startOrientation(particles_.size());
     forAll(particles_, i)
     {
         startVelocity[i] = particles_[i].velocity0();
         startOmega[i] = particles_[i].angularVelocity0();
+        startPosition[i] = particles_[i].position();
+        startOrientation[i] = particles_[i].orientation();
     }
 
     touchingBoundary_ = -1;
@@ -1551,6 +1555,10 @@ void Foam::dlmParticleCloud::move()
         }
     }
 
+    forAll(particles_, i)
+    {
+        particles_[i].setStepMotion(startPosition[i], startOrientation[i]);
+    }
     wrapPeriodic();
     addWorkTime(workPart::motion, timer.elapsedCpuTime());
 

@@ -38,7 +38,7 @@ void Foam::fv::rigidProjection::checkKeywords(const dictionary& dict) const
     const wordHashSet own
     ({
         "mixedCells", "forceRelaxation", "implicitHold", "gapBlending",
-        "boundaryLayerSlip"
+        "boundaryLayerSlip", "forceFollowsParticles"
     });
     const word coeffsName(modelType_ + "Coeffs");
     wordHashSet known({"type", "libs", "active", "log", coeffsName});

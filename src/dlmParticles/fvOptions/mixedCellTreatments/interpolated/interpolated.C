@@ -7,6 +7,7 @@
 #include "interpolated.H"
 #include "dlmParticleCloud.H"
 #include "fvmDdt.H"
+#include "gaussGrad.H"
 #include "scalarMatrices.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -210,6 +211,10 @@ void Foam::fv::interpolated::updateRegions()
             << endl;
     }
 
+    if (forceFollowsParticles_)
+    {
+        moveForceWithParticles();
+    }
     restrictForce();
     heldForce_ = force_.primitiveField();
     sumRegionGeometry();
@@ -266,6 +271,59 @@ void Foam::fv::interpolated::sumRegionGeometry()
     }
     Pstream::listCombineGather(geometricSums_, plusEqOp<scalar>());
     Pstream::listCombineScatter(geometricSums_);
+}
+
+
+void Foam::fv::interpolated::moveForceWithParticles()
+{
+    const PtrList<dlmParticle>& particles =
+        mesh_.lookupObject<dlmParticleCloud>("particles").particles();
+
+    // The particles are the same on every rank, and so is this choice
+    bool moved = false;
+    for (const dlmParticle& p : particles)
+    {
+        moved = moved
+         || (
+                p.motion() != dlmParticle::motionType::fixed
+             && (
+                    magSqr(p.stepDisplacement()) > 0
+                 || magSqr(p.stepRotation().v()) > 0
+                )
+            );
+    }
+    if (!moved)
+    {
+        return;
+    }
+
+    force_.correctBoundaryConditions();
+    const volTensorField gradForce
+    (
+        fv::gaussGrad<vector>(mesh_).calcGrad(force_, "grad(rigidForce)")
+    );
+    const vectorField carried(force_.primitiveField());
+    vectorField& f = force_.primitiveFieldRef();
+    const vectorField& C = mesh_.C();
+
+    forAll(particles, i)
+    {
+        const dlmParticle& p = particles[i];
+        if (p.motion() == dlmParticle::motionType::fixed)
+        {
+            continue;
+        }
+        const tensor turn(p.stepRotation().R());
+        for (const label celli : regions_.cells()[i])
+        {
+            // From the cell centre to where the particle's material point
+            // now there was a step ago; the force there, turned with the
+            // particle
+            const vector arm(C[celli] - p.position());
+            const vector back((arm & turn) - arm - p.stepDisplacement());
+            f[celli] = turn & (carried[celli] + (back & gradForce[celli]));
+        }
+    }
 }
 
 
@@ -369,6 +427,7 @@ Foam::fv::interpolated::interpolated
     implicitHold_(10),
     gapBlending_(0),
     boundaryLayerSlip_(false),
+    forceFollowsParticles_(true),
     viscosity_(0),
     force_
     (
@@ -413,6 +472,8 @@ void Foam::fv::interpolated::read(const dictionary& coeffs)
     implicitHold_ = coeffs.getOrDefault<scalar>("implicitHold", 10);
     gapBlending_ = coeffs.getOrDefault<scalar>("gapBlending", 0);
     boundaryLayerSlip_ = coeffs.getOrDefault<bool>("boundaryLayerSlip", false);
+    forceFollowsParticles_ =
+        coeffs.getOrDefault<bool>("forceFollowsParticles", true);
     if (boundaryLayerSlip_)
     {
         const IOdictionary& transport =
