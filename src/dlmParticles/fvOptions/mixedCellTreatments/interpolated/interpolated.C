@@ -285,7 +285,7 @@ void Foam::fv::interpolated::moveForceWithParticles()
     {
         moved = moved
          || (
-                p.motion() != dlmParticle::motionType::fixed
+                p.isFree()
              && (
                     magSqr(p.stepDisplacement()) > 0
                  || magSqr(p.stepRotation().v()) > 0
@@ -308,8 +308,11 @@ void Foam::fv::interpolated::moveForceWithParticles()
 
     forAll(particles, i)
     {
+        // Held particles keep their force on the cells: their inside cells
+        // are held implicitly in every solution, and a prescribed sphere's
+        // force moved with it took its flow 0.3 % off the held sphere's
         const dlmParticle& p = particles[i];
-        if (p.motion() == dlmParticle::motionType::fixed)
+        if (!p.isFree())
         {
             continue;
         }
