@@ -39,14 +39,17 @@ boundary
 """
 
 
-def falling_sphere(tmp_path, env, name, density, end_time, delta_t=5e-4):
+def falling_sphere(tmp_path, env, name, density, end_time, delta_t=5e-4,
+                   nu=1e-5, settings=None):
     """Water (nu 1e-5, so that the drag over the fall is below 0.5 % of a
-    heavy sphere's weight) at rest, the sphere released from rest."""
+    heavy sphere's weight) at rest, the sphere released from rest; further
+    dictionary settings may be given."""
     case = Case.copy(SPHERE_BOX, tmp_path / name, env)
     (case.path / "system" / "blockMeshDict").write_text(TALL_BOX)
     case.run("blockMesh")
     settings = {
-        ("constant/transportProperties", "nu"): 1e-5,
+        **(settings or {}),
+        ("constant/transportProperties", "nu"): nu,
         ("constant/particleProperties", "particles/sphere/density"): density,
         ("constant/particleProperties", "particles/sphere/position"):
             "(0.0201 0.0199 0.075)",
@@ -329,26 +332,13 @@ def settling_at_Re_half(path, env, delta_t, follow=True):
     time derivative) settling at a fixed step from rest: its mean velocity
     over 0.4-0.5 s (the displacement, which averages the swing of crossing
     cells)."""
-    case = Case.copy(SPHERE_BOX, path, env)
-    (case.path / "system" / "blockMeshDict").write_text(TALL_BOX)
-    case.run("blockMesh")
-    for (file, entry), value in {
-        ("constant/transportProperties", "nu"): 3e-4,
-        ("constant/particleProperties", "particles/sphere/density"): 1167,
-        ("constant/particleProperties", "particles/sphere/position"):
-            "(0.0201 0.0199 0.075)",
+    h = falling_sphere(path.parent, env, path.name, 1167, 0.5, delta_t, nu=3e-4, settings={
         ("system/fvSchemes", "ddtSchemes/default"): "backward",
         ("system/fvSolution", "PIMPLE/nCorrectors"): 3,
         ("system/fvOptions", "rigidProjection/forceFollowsParticles"):
             "true" if follow else "false",
-        ("system/controlDict", "deltaT"): delta_t,
-        ("system/controlDict", "endTime"): 0.5,
-        ("system/controlDict", "maxViscousNumber"): 1000,
-        ("system/controlDict", "writeInterval"): 1000,
-    }.items():
-        case.set(file, entry, value)
-    case.run("pimpleDLMFoam")
-    t, z = case.history()["sphere"][:, [0, 3]].T
+    })
+    t, z = h[:, [0, 3]].T
     return (np.interp(0.5, t, z) - np.interp(0.4, t, z))/0.1
 
 
