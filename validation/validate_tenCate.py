@@ -8,13 +8,16 @@ run), and the wall time. Writes results/tenCate.csv, results/tenCate_<E>.png
 (velocity and gap against time) and results/tenCate_speed_error.png.
 
     validation/validate_tenCate.py [--cases E1,E2] [--np 2] [--step-factor F]
-                                   [--end-time T] [N ...]
+                                   [--end-time T] [--plot-only] [N ...]
                                    (default all cases, N = 6 8 12)
 
 --step-factor scales the tutorial's step limits (maxCo, maxDeltaT): 0.5 runs
 at half the default step, to measure how far u_max depends on the step.
 --end-time ends the runs earlier than the tutorial's end (after the landing):
 E1 reaches u_max at about 2 s of its 4.1, so 2.3 halves its cost.
+The plots show every run of the case (and step factor) found under
+validation/runs, so that resolutions run one at a time end in one plot;
+--plot-only redraws them without running.
 """
 
 import argparse
@@ -59,6 +62,19 @@ def scale_step(case, factor):
     control.write_text(text)
 
 
+def stored_histories(case_name, tag, env):
+    """Sphere histories of the runs of a case under RUNS at one step factor
+    (tag), by resolution: label -> history."""
+    found = []
+    for path in RUNS.glob(f"tenCate_{case_name}_*"):
+        match = re.fullmatch(rf"tenCate_{case_name}_(\d+){re.escape(tag)}", path.name)
+        data = path / "postProcessing" / "particles" / "0" / "particles.dat"
+        if match and data.exists():
+            found.append((int(match.group(1)), Case(path, env).history()["sphere"]))
+    label_tag = tag.replace("_", ", ")
+    return {f"{n} cells/d{label_tag}": h for n, h in sorted(found, key=lambda f: f[0])}
+
+
 HEADER = ["case", "cellsPerDiameter", "stepFactor", "u_max", "u_max_exp",
           "relError", "rmsVelocityDeviation", "wallTime_s", "steps", "endTime_s"]
 
@@ -69,6 +85,7 @@ def main():
     parser.add_argument("--np", type=int, default=2)
     parser.add_argument("--step-factor", type=float, default=1.0)
     parser.add_argument("--end-time", type=float)
+    parser.add_argument("--plot-only", action="store_true")
     parser.add_argument("resolutions", nargs="*", type=int, default=[6, 8, 12])
     args = parser.parse_args()
 
@@ -88,10 +105,9 @@ def main():
 
     rows = stored_rows()
     for case_name in args.cases.split(","):
-        histories = {}
         factor = args.step_factor
-        for n in args.resolutions:
-            tag = "" if factor == 1 else f"_step{factor:g}"
+        tag = "" if factor == 1 else f"_step{factor:g}"
+        for n in [] if args.plot_only else args.resolutions:
             case = Case.copy(ROOT / "tutorials" / "tenCate",
                              RUNS / f"tenCate_{case_name}_{n}{tag}", env)
             if factor != 1:
@@ -99,7 +115,6 @@ def main():
             end = [] if args.end_time is None else [args.end_time]
             seconds = timed_run(case, "./Allrun", case_name, n, args.np, *end)
             h = case.history()["sphere"]
-            histories[f"{n} cells/d{tag.replace('_', ', ')}"] = h
             u_max, error = tenCate.summary(case_name, h)
             rms = rms_velocity_deviation(case_name, h)
             rows = [r for r in stored_rows()
@@ -112,8 +127,10 @@ def main():
                   f"rms={100*rms:.2f}% wall={seconds:.0f}s steps={len(h)} "
                   f"end={h[-1, 0]:.3f}s", flush=True)
             write_table(table, HEADER, rows)
-        tenCate.plot(case_name, histories,
-                     RESULTS / f"tenCate_{case_name}{tag}.png")
+        histories = stored_histories(case_name, tag, env)
+        if histories:
+            tenCate.plot(case_name, histories,
+                         RESULTS / f"tenCate_{case_name}{tag}.png")
 
     import matplotlib
     matplotlib.use("Agg")
