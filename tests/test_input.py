@@ -346,3 +346,43 @@ def test_plain_flow_at_rest(meshed, tmp_path):
     iterations = [int(n) for n in re.findall(r"Solving for \w+,.* No Iterations (\d+)", log)]
     assert len(iterations) == 3*(3 + 2), log[-2000:]
     assert max(iterations) == 0, log[-2000:]
+
+
+SECOND = "second { shape sphere; radius 0.004; density 2000; position (0.015 0.015 0.04); }"
+
+
+@pytest.mark.parametrize("edit, expected", [
+    (particles("sphere { " + GOOD.replace("2000;", "2500;") + " }"),
+     "Particle sphere has other properties in constant/particleProperties than at time 0.01:"
+     " density 2500; there, density 2000; at time 0.01."),
+    (particles("sphere { " + GOOD + " motion fixed; }"),
+     "Particle sphere has other properties in constant/particleProperties than at time 0.01:"
+     " motion fixed; there, motion free; at time 0.01."),
+    (particles("sphere { " + GOOD + " } " + SECOND),
+     "Particle second is in constant/particleProperties but not among the particles of time 0.01."),
+    (particles(SECOND),
+     "Particle second is in constant/particleProperties but not among the particles of time 0.01."),
+    (particles(""),
+     "Particle sphere is among the particles of time 0.01 but not in constant/particleProperties."),
+], ids=["density changed", "motion changed", "particle added", "particle renamed", "particle dropped"])
+def test_restart_refuses_particles_changed_since_the_written_time(meshed, tmp_path, edit, expected):
+    """A restart continues the particles written with its start time, which
+    replace those of particleProperties: a particle added, dropped or changed
+    there between the runs would be ignored, so the run stops and says so.
+    The same input unchanged restarts."""
+    case = copy(meshed, tmp_path)
+    particles("sphere { " + GOOD + " }")(case)
+    case.set(CONTROL, "endTime", 0.01)
+    case.set(CONTROL, "writeInterval", 2)
+    case.run("pimpleDLMFoam")
+    case.set(CONTROL, "startFrom", "latestTime")
+    case.set(CONTROL, "endTime", 0.015)
+    unchanged = case.run("pimpleDLMFoam", check=False)
+    assert unchanged.returncode == 0, unchanged.log[-2000:]
+    shutil.rmtree(case.path / "0.015")
+
+    edit(case)
+    result = case.run("pimpleDLMFoam", check=False)
+    assert result.returncode > 0, result.log[-2000:]
+    assert expected in result.log, result.log[-2000:]
+    assert "start from time 0, or edit both files alike" in result.log

@@ -272,13 +272,19 @@ void Foam::dlmParticle::setMotion
 }
 
 
-void Foam::dlmParticle::write(Ostream& os) const
+void Foam::dlmParticle::writeProperties(Ostream& os) const
 {
-    os.beginBlock(name_);
     shape_->write(os);
     os.writeEntry("density", density_);
     os.writeEntry("material", material_);
     os.writeEntry("motion", motionTypeNames[motion_]);
+}
+
+
+void Foam::dlmParticle::write(Ostream& os) const
+{
+    os.beginBlock(name_);
+    writeProperties(os);
     os.writeEntry("position", position_);
     os.writeEntry("velocity", velocity_);
     os.writeEntry("angularVelocity", angularVelocity_);

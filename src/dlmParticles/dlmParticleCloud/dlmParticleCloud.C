@@ -43,6 +43,17 @@ void Foam::dlmParticleCloud::readParticles(const dictionary& particlesDict)
 }
 
 
+void Foam::dlmParticleCloud::readInput()
+{
+    if (properties_.found("particles"))
+    {
+        checkRepeatedNames();
+        readParticles(properties_.subDict("particles"));
+    }
+    readParticleFile();
+}
+
+
 void Foam::dlmParticleCloud::checkRepeatedNames() const
 {
     // A dictionary keeps one entry of a repeated keyword (the last merged
@@ -707,6 +718,140 @@ void Foam::dlmParticleCloud::readOutlets(const dictionary& state)
 }
 
 
+void Foam::dlmParticleCloud::checkInputAgainstState
+(
+    const PtrList<dlmParticle>& input,
+    const fileName& statePath
+) const
+{
+    // The particles, not their periodic images
+    HashTable<label> stateIndex(2*nParticles_);
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        stateIndex.insert(particles_[i].name(), i);
+    }
+    wordHashSet removed;
+    label nRemoved = 0;
+    for (const particleOutlet& outlet : outlets_)
+    {
+        removed.insert(outlet.removedNames());
+        nRemoved += outlet.nRemoved();
+    }
+    // States written before the outlets recorded names cannot tell a
+    // removed particle from one added to the input
+    const bool removedKnown = removed.size() == nRemoved;
+
+    const word startTime(mesh_.time().timeName());
+    const fileName inputName(properties_.instance()/properties_.name());
+    const auto fail = [&](const word& name, const string& what)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "Particle " << name << " " << what.c_str() << nl
+            << "A run from time " << startTime << " continues the particles"
+            << " written with that time (" << statePath << "), which"
+            << " replace those of " << inputName.c_str() << "; the two must"
+            << " list the same particles with the same properties." << nl
+            << "To change the particles, start from time 0, or edit both"
+            << " files alike." << exit(FatalIOError);
+    };
+
+    // An entry on one line, at 15 digits: the decimals as given
+    const auto oneLine = [](const entry& e)
+    {
+        OStringStream os;
+        os.precision(15);
+        os << e;
+        string line(os.str());
+        line.replaceAll("\n", " ");
+        line.removeRepeated(' ');
+        line.removeTrailing(' ');
+        return line;
+    };
+
+    const auto properties = [](const dlmParticle& p)
+    {
+        OStringStream os;
+        os.precision(17);
+        p.writeProperties(os);
+        if (p.motion() == dlmParticle::motionType::prescribed)
+        {
+            os.writeEntry("velocity", p.velocity());
+            os.writeEntry("angularVelocity", p.angularVelocity());
+        }
+        return dictionary(IStringStream(os.str())());
+    };
+
+    wordHashSet inInput(2*input.size());
+    for (const dlmParticle& p : input)
+    {
+        inInput.insert(p.name());
+        const auto iter = stateIndex.cfind(p.name());
+        if (!iter.found())
+        {
+            if (removedKnown && !removed.found(p.name()))
+            {
+                fail
+                (
+                    p.name(),
+                    "is in " + inputName + " but not among the particles"
+                    " of time " + startTime
+                  + (
+                        outlets_.size()
+                      ? " (nor among those the outlets removed)."
+                      : "."
+                    )
+                );
+            }
+            continue;
+        }
+
+        const dictionary given(properties(p));
+        const dictionary continued(properties(particles_[iter.val()]));
+        for (const entry& e : continued)
+        {
+            const entry* g = given.findEntry(e.keyword(), keyType::LITERAL);
+            if (!g || *g != e)
+            {
+                fail
+                (
+                    p.name(),
+                    "has other properties in " + inputName + " than at"
+                    " time " + startTime + ": "
+                  + (g ? oneLine(*g) : "no " + e.keyword())
+                  + " there, " + oneLine(e) + " at time " + startTime + "."
+                );
+            }
+        }
+        for (const entry& g : given)
+        {
+            if (!continued.found(g.keyword(), keyType::LITERAL))
+            {
+                fail
+                (
+                    p.name(),
+                    "has " + g.keyword() + " in " + inputName + ", which"
+                    " its state at time " + startTime + " has not."
+                );
+            }
+        }
+    }
+
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        const word& name = particles_[i].name();
+        if (!inInput.found(name))
+        {
+            fail
+            (
+                name,
+                "is among the particles of time " + startTime
+              + " but not in " + inputName + "."
+            );
+        }
+    }
+}
+
+
 void Foam::dlmParticleCloud::checkOutlets() const
 {
     for (label i = 0; i < nParticles_; ++i)
@@ -844,7 +989,7 @@ bool Foam::dlmParticleCloud::removeLeaving()
             if (outlet.holds(p.position()))
             {
                 const scalar mass = p.density()*p.shape().volume();
-                outlet.count(mass);
+                outlet.count(p.name(), mass);
                 recordRemoval(outlet, p, mass);
                 Info<< "Particle " << p.name() << " leaves through outlet "
                     << outlet.name() << " (" << outlet.nRemoved()
@@ -1315,25 +1460,20 @@ Foam::dlmParticleCloud::dlmParticleCloud
             << " must be at least 1" << exit(FatalIOError);
     }
 
-    // On restart the state written with the start time replaces the input
+    // On restart the state written with the start time replaces the input,
+    // which is kept to be checked against it
     const fileName statePath(objectPath());
     dictionary state;
+    PtrList<dlmParticle> input;
+    readInput();
     if (isFile(statePath))
     {
         Info<< "Reading particle state from " << statePath << endl;
         restarted_ = true;
         IFstream is(statePath);
         state.read(is);
+        input.transfer(particles_);
         readParticles(state.subDict("particles"));
-    }
-    else
-    {
-        if (properties_.found("particles"))
-        {
-            checkRepeatedNames();
-            readParticles(properties_.subDict("particles"));
-        }
-        readParticleFile();
     }
 
     // The cell searches use the tet decomposition, which every processor
@@ -1383,6 +1523,10 @@ Foam::dlmParticleCloud::dlmParticleCloud
     }
 
     readOutlets(state);
+    if (restarted_)
+    {
+        checkInputAgainstState(input, statePath);
+    }
 
     // The last step's change of speed sets the next step's particle Courant
     // number: a restart takes it from the written state

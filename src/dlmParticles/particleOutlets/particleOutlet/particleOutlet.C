@@ -76,6 +76,8 @@ void Foam::particleOutlet::readState(const dictionary& state)
     {
         nRemoved_ = dictPtr->get<label>("particles");
         massRemoved_ = dictPtr->get<scalar>("mass");
+        removedNames_ =
+            dictPtr->getOrDefault<wordList>("removed", wordList());
     }
 }
 
@@ -85,6 +87,7 @@ void Foam::particleOutlet::writeState(Ostream& os) const
     os.beginBlock(name_);
     os.writeEntry("particles", nRemoved_);
     os.writeEntry("mass", massRemoved_);
+    os.writeEntry("removed", removedNames_);
     os.endBlock();
 }
 
