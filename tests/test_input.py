@@ -213,6 +213,18 @@ BAD_INPUT = [
          setting("constant/transportProperties", "nu", 1e-5)),
         "Particle sphere reached the cells next to a wall", "'contact' dictionary",
         "The state of this time has been written"),
+    bad("particles meet, no contacts",
+        particles("sphere { " + GOOD + " } upper { shape sphere; radius 0.004; density 8000;"
+                  " position (0.015 0.015 0.036); }"),
+        "Particles sphere and upper overlap by", "at t = 0.055",
+        "Particle-particle contact is not modelled without a 'contact' dictionary",
+        "The state of this time has been written"),
+    bad("particles meet, no contacts, dry",
+        particles("sphere { " + GOOD + " } upper { shape sphere; radius 0.004; density 8000;"
+                  " position (0.015 0.015 0.036); velocity (0 0 -0.5); }"),
+        "Particles sphere and upper overlap by", "at t = 0.005",
+        "Particle-particle contact is not modelled without a 'contact' dictionary",
+        "The state of this time has been written", solver="dlmDEMFoam"),
     bad("unknown top-level keyword", append("constant/particleProperties", "surfaceResolutoin 16;\n"),
         "Unknown keyword 'surfaceResolutoin'"),
     # A value that is not a number (here Python's repr of a numpy float)

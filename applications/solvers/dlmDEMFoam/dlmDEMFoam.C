@@ -89,11 +89,13 @@ int main(int argc, char *argv[])
         particles.move();
         particles.removeLeaving();
         particles.checkInMesh();
+        particles.checkApart();
         particles.printSummary();
 
-        // The last step and a stop (a particle out of the mesh) write their
-        // state, whatever the write interval
-        const bool stopping = particles.leftMesh();
+        // The last step and a stop (a particle out of the mesh, or without
+        // contacts two overlapping) write their state, whatever the write
+        // interval
+        const bool stopping = particles.leftMesh() || particles.overlapping();
         const bool lastStep = progress.lastStep();
         particles.writeStep(stopping || lastStep);
         particleSteps += particles.particles().size();
@@ -106,9 +108,13 @@ int main(int argc, char *argv[])
         {
             runTime.write();
         }
-        if (stopping)
+        if (particles.leftMesh())
         {
             particles.failOutsideMesh();
+        }
+        if (particles.overlapping())
+        {
+            particles.failOverlapping();
         }
         runTime.printExecutionTime(Info);
     }

@@ -153,13 +153,15 @@ int main(int argc, char *argv[])
             projection->recordFractions(particles);
         }
         particles.checkInMesh();
+        particles.checkApart();
         particles.printSummary();
 
-        // The last step and a stop (a particle at a wall without contacts,
-        // or out of the mesh) write their state, whatever the write
-        // interval
+        // The last step and a stop (without contacts a particle at a wall
+        // or two overlapping; a particle out of the mesh) write their
+        // state, whatever the write interval
         const bool stopping =
-            particles.touchingBoundary() || particles.leftMesh();
+            particles.touchingBoundary() || particles.leftMesh()
+         || particles.overlapping();
         const bool lastStep = progress.lastStep();
 
         const cpuTime outputTimer;
@@ -186,6 +188,10 @@ int main(int argc, char *argv[])
         if (particles.leftMesh())
         {
             particles.failOutsideMesh();
+        }
+        if (particles.overlapping())
+        {
+            particles.failOverlapping();
         }
 
         runTime.printExecutionTime(Info);

@@ -376,14 +376,13 @@ void Foam::dlmParticleCloud::addPeriodicImages()
 }
 
 
-void Foam::dlmParticleCloud::checkOverlaps() const
+Foam::labelPair Foam::dlmParticleCloud::findOverlap
+(
+    const scalar allowed,
+    scalar& depth,
+    scalar& size
+) const
 {
-    // Without contact forces nothing would part overlapping particles;
-    // with them an overlap beyond a few percent would part them violently
-    const scalar allowed =
-        contact_.valid() ? contact_->maxStartOverlap() : 0;
-    const fileName source(properties_.filePath());
-
     // Sweep along x: each particle meets those whose interval starts
     // within its own
     const label n = particles_.size();
@@ -409,12 +408,11 @@ void Foam::dlmParticleCloud::checkOverlaps() const
             }
             const dlmParticle& pj = particles_[order[b]];
             const scalar Rj = pj.shape().boundingRadius();
-            scalar depth = Ri + Rj - mag(pi.position() - pj.position());
+            depth = Ri + Rj - mag(pi.position() - pj.position());
             // Round shapes: the depth and diameters; others: the least
             // depth (convexOverlap) and the thicknesses across it
-            scalar smaller = 2*min(Ri, Rj);
-            const bool round = pi.shape().round() && pj.shape().round();
-            if (!round && depth > 0)
+            size = 2*min(Ri, Rj);
+            if (!(pi.shape().round() && pj.shape().round()) && depth > 0)
             {
                 const convexOverlap::result o = convexOverlap().overlap
                 (
@@ -424,38 +422,99 @@ void Foam::dlmParticleCloud::checkOverlaps() const
                 depth = o.depth;
                 const vector ni(pi.R().T() & o.normal);
                 const vector nj(pj.R().T() & o.normal);
-                smaller = min(pi.shape().thickness(ni), pj.shape().thickness(nj));
+                size = min(pi.shape().thickness(ni), pj.shape().thickness(nj));
             }
-            const word size
-            (
-                round ? "smaller diameter" : "smaller thickness across it"
-            );
             // Touching (as in a packing) is no overlap, to round-off
-            const scalar limit = max(allowed*smaller, 1e-9*(Ri + Rj));
-            if (depth > limit)
+            if (depth > max(allowed*size, 1e-9*(Ri + Rj)))
             {
-                FatalErrorInFunction
-                    << "Particles " << pi.name() << " and " << pj.name()
-                    << " (" << source << ") overlap by " << depth << " ("
-                    << 100*depth/smaller << " % of the " << size << ")"
-                    << " at the start: ";
-                if (contact_.valid())
-                {
-                    FatalError
-                        << "more than the contact laws resolve"
-                        << " (contact.maxStartOverlap " << allowed
-                        << " of the " << size << ")";
-                }
-                else
-                {
-                    FatalError
-                        << "without contacts (a 'contact' dictionary)"
-                        << " particles must not overlap";
-                }
-                FatalError << exit(FatalError);
+                return labelPair(order[a], order[b]);
             }
         }
     }
+    return labelPair(-1, -1);
+}
+
+
+Foam::word Foam::dlmParticleCloud::overlapSize(const labelPair& pair) const
+{
+    return
+        particles_[pair.first()].shape().round()
+     && particles_[pair.second()].shape().round()
+      ? "smaller diameter"
+      : "smaller thickness across it";
+}
+
+
+void Foam::dlmParticleCloud::checkOverlaps() const
+{
+    // Without contact forces nothing would part overlapping particles;
+    // with them an overlap beyond a few percent would part them violently
+    const scalar allowed =
+        contact_.valid() ? contact_->maxStartOverlap() : 0;
+    scalar depth = 0;
+    scalar smaller = 0;
+    const labelPair pair(findOverlap(allowed, depth, smaller));
+    if (pair.first() < 0)
+    {
+        return;
+    }
+
+    const word size(overlapSize(pair));
+    FatalErrorInFunction
+        << "Particles " << particles_[pair.first()].name() << " and "
+        << particles_[pair.second()].name() << " ("
+        << properties_.filePath() << ") overlap by " << depth << " ("
+        << 100*depth/smaller << " % of the " << size << ") at the start: ";
+    if (contact_.valid())
+    {
+        FatalError
+            << "more than the contact laws resolve"
+            << " (contact.maxStartOverlap " << allowed << " of the " << size
+            << ")";
+    }
+    else
+    {
+        FatalError
+            << "without contacts (a 'contact' dictionary) particles must not"
+            << " overlap";
+    }
+    FatalError << exit(FatalError);
+}
+
+
+void Foam::dlmParticleCloud::checkApart()
+{
+    overlapping_ = labelPair(-1, -1);
+    if (contact_.valid() || particles_.size() < 2)
+    {
+        return;
+    }
+    const cpuTime timer;
+    scalar depth = 0;
+    scalar size = 0;
+    overlapping_ = findOverlap(0, depth, size);
+    addWorkTime(workPart::motion, timer.elapsedCpuTime());
+}
+
+
+void Foam::dlmParticleCloud::failOverlapping() const
+{
+    // The pair's depth and size, found again: nothing moved since
+    scalar depth = 0;
+    scalar smaller = 0;
+    findOverlap(0, depth, smaller);
+    const dlmParticle& a = particles_[overlapping_.first()];
+    const dlmParticle& b = particles_[overlapping_.second()];
+    FatalErrorInFunction
+        << "Particles " << a.name() << " and " << b.name() << " overlap by "
+        << depth << " (" << 100*depth/smaller << " % of the "
+        << overlapSize(overlapping_) << ") at t = " << mesh_.time().value()
+        << " (positions " << a.position() << " and " << b.position()
+        << "). Particle-particle contact is not modelled without a"
+        << " 'contact' dictionary in " << properties_.filePath()
+        << ": add one (see README.md, Contacts; law none lets particles"
+        << " pass through each other). The state of this time has been"
+        << " written" << exit(FatalError);
 }
 
 
@@ -1403,6 +1462,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     boundaryCell_(mesh.nCells(), false),
     touchingBoundary_(-1),
     leftMesh_(-1),
+    overlapping_(-1, -1),
     nMoves_(0),
     resolved_(!dry),
     splitDirections_(Zero),
