@@ -485,7 +485,7 @@ void Foam::dlmParticleCloud::checkOverlaps() const
 void Foam::dlmParticleCloud::checkApart()
 {
     overlapping_ = labelPair(-1, -1);
-    if (contact_.valid() || particles_.size() < 2)
+    if (contact_.valid() || particles_.size() < 2 || allFixed())
     {
         return;
     }
