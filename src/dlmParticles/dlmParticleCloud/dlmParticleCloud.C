@@ -219,6 +219,24 @@ void Foam::dlmParticleCloud::checkParticles()
                     << " shapes need the mesh's empty direction to be z"
                     << exit(FatalError);
             }
+            // A 2D particle moves in the x-y plane and turns about z: any
+            // other component given would be dropped without a word
+            const vector& U = p.velocity();
+            const vector& omega = p.angularVelocity();
+            if
+            (
+                !restarted_
+             && (U.z() != 0 || omega.x() != 0 || omega.y() != 0)
+            )
+            {
+                FatalErrorInFunction
+                    << "Particle " << p.name() << " (" << source << "):"
+                    << " velocity " << U << " and angularVelocity " << omega
+                    << " must lie in the 2D mesh's plane: a 2D particle moves"
+                    << " in x and y and turns about z, so give (u v 0) and"
+                    << " (0 0 w)" << exit(FatalError);
+            }
+
             // A 2D shape sits in the mesh's mid-plane
             point X(p.position());
             X.z() = 0.5*(bounds.min().z() + bounds.max().z());
