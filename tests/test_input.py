@@ -157,6 +157,9 @@ BAD_INPUT = [
         particles("coin { shape disk; radius 0.01; density 2500; position (0.1 0.3 0); velocity (0 0 0.5); }"),
         "Particle coin", "velocity (0 0 0.5) and angularVelocity (0 0 0) must lie in the 2D mesh's plane",
         source="fallingDisk"),
+    bad("gravity out of the 2D plane", setting("constant/g", "value", "(0 -9.81 1)"),
+        "constant/g", "value (0 -9.81 1) has a component along z, the 2D mesh's empty direction",
+        source="fallingDisk"),
     bad("ellipse semi-axis negative", particles("egg { shape ellipse; semiAxes (0.01 -0.005); density 2500; position (0.1 0.3 0); }"),
         "semiAxes (0.01 -0.005) of particle egg must both be positive", "particleProperties", source="fallingDisk"),
     bad("polygon crossing itself", particles("tie { shape polygon; vertices ((0 0) (0.02 0.02) (0.02 0) (0 0.01));"

@@ -16,6 +16,7 @@
 #include "emptyPolyPatch.H"
 #include "cyclicPolyPatch.H"
 #include "centreDistances.H"
+#include "uniformDimensionedFields.H"
 #include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -1588,6 +1589,21 @@ Foam::dlmParticleCloud::dlmParticleCloud
     }
 
     checkParticles();
+
+    // The particles and the flow of a 2D case move in the x-y plane:
+    // gravity along z would be dropped without a word
+    if (twoD() && mesh.time().foundObject<uniformDimensionedVectorField>("g"))
+    {
+        const uniformDimensionedVectorField& g =
+            mesh.time().lookupObject<uniformDimensionedVectorField>("g");
+        if (g.value().z() != 0)
+        {
+            FatalErrorInFunction
+                << g.objectPath() << ": value " << g.value() << " has a"
+                << " component along z, the 2D mesh's empty direction, where"
+                << " nothing moves: give (gx gy 0)" << exit(FatalError);
+        }
+    }
     addPeriodicImages();
 
     if (properties_.found("contact"))
