@@ -17,7 +17,8 @@ Description
     Each step the free particles take gravity's impulse, then the contact
     sub-steps move them (particleContact). A particle whose centre leaves
     the mesh, which bounds the scene, stops the run after its state is
-    written, unless an outlet removed it. The output is pimpleDLMFoam's:
+    written, unless an outlet removed it; so do two particles meeting in a
+    case without contacts. The output is pimpleDLMFoam's:
     postProcessing/particles, VTK/particles and <time>/uniform/particles for
     restart. At the end the run prints its particle-steps per second.
 

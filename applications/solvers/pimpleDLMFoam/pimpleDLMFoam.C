@@ -52,10 +52,11 @@ Description
     velocity) starts the fluid with them: rigid inside each particle and
     the flow of an impulsive start around it, so that the particles keep
     their velocity. The last step's state is always written, and a run
-    stopped by a free particle reaching a wall without contacts writes its
-    state and ends with an error. The log has a line per step on the
-    particles and, every progressInterval seconds of wall time (system/
-    controlDict, default 10), the run's progress (see runProgress).
+    stopped by a free particle reaching a wall, or two particles meeting,
+    without contacts writes its state and ends with an error. The log has
+    a line per step on the particles and, every progressInterval seconds of
+    wall time (system/controlDict, default 10), the run's progress (see
+    runProgress).
 
     Inputs: constant/transportProperties (rho, nu of the fluid), constant/g,
     constant/particleProperties, system/fvOptions (rigidProjection), fields
