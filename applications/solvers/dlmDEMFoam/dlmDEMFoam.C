@@ -96,7 +96,7 @@ int main(int argc, char *argv[])
         // The last step and a stop (a particle out of the mesh, or without
         // contacts two overlapping) write their state, whatever the write
         // interval
-        const bool stopping = particles.leftMesh() || particles.overlapping();
+        const bool stopping = particles.mustStop();
         const bool lastStep = progress.lastStep();
         particles.writeStep(stopping || lastStep);
         particleSteps += particles.particles().size();
@@ -109,13 +109,9 @@ int main(int argc, char *argv[])
         {
             runTime.write();
         }
-        if (particles.leftMesh())
+        if (stopping)
         {
-            particles.failOutsideMesh();
-        }
-        if (particles.overlapping())
-        {
-            particles.failOverlapping();
+            particles.failStop();
         }
         runTime.printExecutionTime(Info);
     }

@@ -160,9 +160,7 @@ int main(int argc, char *argv[])
         // The last step and a stop (without contacts a particle at a wall
         // or two overlapping; a particle out of the mesh) write their
         // state, whatever the write interval
-        const bool stopping =
-            particles.touchingBoundary() || particles.leftMesh()
-         || particles.overlapping();
+        const bool stopping = particles.mustStop();
         const bool lastStep = progress.lastStep();
 
         const cpuTime outputTimer;
@@ -182,17 +180,9 @@ int main(int argc, char *argv[])
             runTime.write();
         }
 
-        if (particles.touchingBoundary())
+        if (stopping)
         {
-            particles.failAtBoundary();
-        }
-        if (particles.leftMesh())
-        {
-            particles.failOutsideMesh();
-        }
-        if (particles.overlapping())
-        {
-            particles.failOverlapping();
+            particles.failStop();
         }
 
         runTime.printExecutionTime(Info);

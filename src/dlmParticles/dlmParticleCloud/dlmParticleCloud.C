@@ -395,6 +395,23 @@ void Foam::dlmParticleCloud::addPeriodicImages()
 }
 
 
+void Foam::dlmParticleCloud::failStop() const
+{
+    if (touchingBoundary())
+    {
+        failAtBoundary();
+    }
+    if (leftMesh())
+    {
+        failOutsideMesh();
+    }
+    if (overlapping())
+    {
+        failOverlapping();
+    }
+}
+
+
 Foam::labelPair Foam::dlmParticleCloud::findOverlap
 (
     const scalar allowed,
