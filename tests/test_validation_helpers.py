@@ -291,3 +291,22 @@ def test_a_chute_shorter_than_a_pebble_is_refused():
                             capture_output=True, text=True)
     assert result.returncode == 2
     assert "--chute-length 0.5: the chute must be at least a pebble diameter long" in result.stderr
+
+
+def test_ten_cate_plots_take_every_stored_run_of_the_case_and_step(tmp_path, monkeypatch):
+    """validate_tenCate's plots gather the runs of a case at one step factor
+    from the runs directory, by resolution, whichever call ran them; runs of
+    other cases, other step factors, or without a history stay out."""
+    import validate_tenCate
+    monkeypatch.setattr(validate_tenCate, "RUNS", tmp_path)
+    line = "0.1 sphere " + " ".join(["0.01"]*27) + "\n"
+    for name in ("tenCate_E1_12", "tenCate_E1_8", "tenCate_E1_16_step0.5",
+                 "tenCate_E2_8", "tenCate_E1_10"):
+        history = tmp_path / name / "postProcessing/particles/0"
+        history.mkdir(parents=True)
+        if name != "tenCate_E1_10":
+            (history / "particles.dat").write_text("# header\n" + line)
+    assert list(validate_tenCate.stored_histories("E1", "", {})) == \
+        ["8 cells/d", "12 cells/d"]
+    assert list(validate_tenCate.stored_histories("E1", "_step0.5", {})) == \
+        ["16 cells/d, step0.5"]
