@@ -65,6 +65,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "dynamicRefineFvMesh.H"
+#include "CorrectPhi.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "dlmParticleCloud.H"
@@ -89,7 +91,7 @@ int main(int argc, char *argv[])
     #include "setRootCaseLists.H"
     #include "createTime.H"
     runProgress progress(runTime);
-    #include "createMesh.H"
+    #include "createDynamicMesh.H"
     #include "createPimpleControl.H"
     #include "createTimeControls.H"
     #include "checkDeltaT.H"
@@ -98,12 +100,13 @@ int main(int argc, char *argv[])
     #include "createFields.H"
     #include "initContinuityErrs.H"
     #include "initialParticleVelocity.H"
+    #include "createFaceVelocity.H"
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
 
     // Smallest squared distance between neighbouring cell centres
-    const scalar minDeltaSqr = sqr(particles.cellSizeMin());
-    const scalar aspectRatio = cellAspectRatioMax(mesh);
+    scalar minDeltaSqr = sqr(particles.cellSizeMin());
+    scalar aspectRatio = cellAspectRatioMax(mesh);
     Info<< "Largest cell aspect ratio: " << aspectRatio << endl;
     #include "viscousNumber.H"
 
@@ -120,6 +123,7 @@ int main(int argc, char *argv[])
     {
         #include "readTimeControls.H"
         #include "checkTimeControls.H"
+        #include "updateMesh.H"
         #include "CourantNo.H"
         #include "particleCourantNo.H"
         #include "setDeltaT.H"

@@ -1085,4 +1085,21 @@ bool Foam::fv::interpolated::followContacts(vectorField& change) const
 }
 
 
+void Foam::fv::interpolated::updateMesh()
+{
+    const label nCells = mesh_.nCells();
+    heldForce_ = force_.primitiveField();
+    holdRate_.setSize(nCells);
+    holdRate_ = 0;
+    holdTarget_.setSize(nCells);
+    holdTarget_ = Zero;
+    appliedForce_.setSize(nCells);
+    appliedForce_ = Zero;
+    momentum_.clear();
+    regions_.updateMesh();
+    regionMoves_ = -1;
+    updateRegions();
+}
+
+
 // ************************************************************************* //

@@ -1,0 +1,109 @@
+"""Mesh refinement (constant/dynamicMeshDict) under the particles: the
+flow, the particles' fractions and the rigid projection carried through
+every change of the mesh."""
+import math
+import pathlib
+
+import numpy as np
+import pytest
+
+from foamcase import Case, write_periodic_box
+
+HERE = pathlib.Path(__file__).resolve().parent
+ARRAY = HERE.parent / "tutorials" / "periodicArray"
+
+RADIUS = 2.5e-3
+SPEED = 0.01
+
+REFINE_AT_SURFACES = """\
+FoamFile { version 2.0; format ascii; class dictionary; object dynamicMeshDict; }
+dynamicFvMesh   dynamicRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{
+    refineInterval  1;
+    field           alpha.solid;
+    lowerRefineLevel 1e-9;
+    upperRefineLevel 0.999999999;
+    unrefineLevel   1e-9;
+    nBufferLayers   1;
+    maxRefinement   1;
+    maxCells        1000000;
+    correctFluxes
+    (
+        (phi none) (phi_0 none) (phi_0_0 none) (ghf none) (UBlendingFactor none)
+    );
+    dumpLevel       true;
+}
+"""
+
+
+def translating_case(tmp_path, foam_env, name):
+    """A periodic box of 8^3 cells (1 cm) holding a sphere of 2.5 mm radius
+    prescribed to move at 1 cm/s along x through water moving with it, the
+    mesh refined once around the sphere's surface at every step and
+    unrefined behind it: the exact solution is the uniform flow."""
+    case = Case.copy(ARRAY, tmp_path / name, foam_env)
+    write_periodic_box(case, (0.01, 0.01, 0.01), (8, 8, 8))
+    (case.path / "constant" / "particleProperties").write_text(f"""\
+FoamFile {{ version 2.0; format ascii; class dictionary; object particleProperties; }}
+particles
+{{
+    sphere
+    {{
+        shape       sphere;
+        radius      {RADIUS!r};
+        density     1000;
+        position    (0.0051 0.0049 0.005);
+        motion      prescribed;
+        velocity    ({SPEED!r} 0 0);
+    }}
+}}
+""")
+    (case.path / "system" / "fvOptions").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n"
+        "rigidProjection { type rigidProjection; }\n")
+    (case.path / "constant" / "dynamicMeshDict").write_text(REFINE_AT_SURFACES)
+    transport = case.path / "constant" / "transportProperties"
+    transport.write_text(transport.read_text().replace(
+        "nu              1e-3;", "nu              1e-6;"))
+    solution = case.path / "system" / "fvSolution"
+    solution.write_text(solution.read_text().replace(
+        "    U\n    {", '    "pcorr.*"\n    {\n        $p_rgh;\n        tolerance 1e-12;\n'
+        '        relTol 0;\n    }\n\n    U\n    {', 1))
+    velocity = case.path / "0" / "U"
+    velocity.write_text(velocity.read_text().replace(
+        "uniform (0 0 0)", f"uniform ({SPEED!r} 0 0)"))
+    for entry, value in {"adjustTimeStep": "no", "deltaT": 0.01, "endTime": 0.2,
+                         "writeInterval": 0.05, "writeFormat": "ascii"}.items():
+        case.set("system/controlDict", entry, value)
+    return case
+
+
+def test_refinement_that_follows_a_translating_sphere_keeps_the_flow_and_the_solid_exact(
+        tmp_path, foam_env):
+    """Refined around the sphere's surface and unrefined behind it at every
+    step, the fluid moving with the sphere stays the uniform flow to
+    round-off (the flux on new faces from the mapped face velocity, the
+    projection's cells found again on the new cells), and the sphere's solid
+    volume, sum alpha V, is its volume to 1e-12 at every written time (the
+    fractions computed on the new cells, not mapped)."""
+    case = translating_case(tmp_path, foam_env, "translating")
+    case.run("blockMesh")
+    case.run("pimpleDLMFoam")
+    log = (case.path / "log.pimpleDLMFoam").read_text()
+    changes = [int(line.split()[2]) for line in log.splitlines()
+               if line.startswith("Mesh changed:")]
+    assert len(changes) >= 10
+    assert min(changes) > 8**3
+
+    case.run("postProcess", "-func", "writeCellVolumes")
+    volume = 4/3*math.pi*RADIUS**3
+    times = [t for t in case.times() if float(t) > 0]
+    assert times[-1] == "0.2"
+    for time in times:
+        alpha = case.internal_field(f"{time}/alpha.solid")
+        cells = case.internal_field(f"{time}/V")
+        assert alpha.size == cells.size > 8**3
+        assert np.dot(alpha, cells) == pytest.approx(volume, rel=1e-12)
+        U = case.internal_field(f"{time}/U")
+        assert np.abs(U - [SPEED, 0, 0]).max() < 1e-12*SPEED
