@@ -152,3 +152,23 @@ def test_refinement_keeps_the_mixture_momentum_and_continuity_under_a_heavy_free
     alpha = case.internal_field("0.1/alpha.solid")
     cells = case.internal_field("0.1/V")
     assert np.dot(alpha, cells) == pytest.approx(4/3*math.pi*RADIUS**3, rel=1e-12, abs=0)
+
+
+@pytest.mark.parametrize("tutorial, mesh_type, message", [
+    ("periodicArray", "dynamicInkJetFvMesh", "may only be refined"),
+    ("draftingKissingTumbling", "dynamicRefineFvMesh", "refinement works on 3D meshes only"),
+])
+def test_a_dynamic_mesh_the_particles_cannot_follow_is_an_input_error(
+        tmp_path, foam_env, tutorial, mesh_type, message):
+    """A moving mesh, or refinement of a 2D case (dynamicRefineFvMesh would
+    split its one-cell-thick layer), stops the run naming the dictionary."""
+    case = Case.copy(HERE.parent / "tutorials" / tutorial, tmp_path / tutorial, foam_env)
+    (case.path / "constant" / "dynamicMeshDict").write_text(
+        REFINE_AT_SURFACES.replace("dynamicFvMesh   dynamicRefineFvMesh;",
+                                   f"dynamicFvMesh   {mesh_type};"
+                                   "\namplitude 0.1; frequency 10; refPlaneX 0;"))
+    case.run("blockMesh")
+    result = case.run("pimpleDLMFoam", check=False)
+    assert result.returncode != 0
+    assert "constant/dynamicMeshDict" in result.log
+    assert message in result.log
