@@ -3,6 +3,8 @@ flow, the particles' fractions and the rigid projection carried through
 every change of the mesh."""
 import math
 import pathlib
+import re
+import shutil
 
 import numpy as np
 import pytest
@@ -17,7 +19,7 @@ SPEED = 0.01
 
 REFINE_AT_SURFACES = """\
 FoamFile { version 2.0; format ascii; class dictionary; object dynamicMeshDict; }
-dynamicFvMesh   dynamicRefineFvMesh;
+dynamicFvMesh   dlmRefineFvMesh;
 dynamicRefineFvMeshCoeffs
 {
     refineInterval  1;
@@ -53,7 +55,7 @@ particles
         shape       sphere;
         radius      {RADIUS!r};
         density     1000;
-        position    (0.0051 0.0049 0.005);
+        position    (0.0051 0.0049 0.0047);
         motion      prescribed;
         velocity    ({SPEED!r} 0 0);
     }}
@@ -109,6 +111,34 @@ def test_refinement_that_follows_a_translating_sphere_keeps_the_flow_and_the_sol
         assert np.abs(U - [SPEED, 0, 0]).max() < 1e-12*SPEED
 
 
+def heavy_case(tmp_path, foam_env, name, end_time=0.1, walls=False):
+    """The translating case with the sphere free and twice as heavy as the
+    water, launched at 1 cm/s along x and 3 mm/s along y through water at
+    rest; walls: the box closed by no-slip walls instead of periodic."""
+    case = translating_case(tmp_path, foam_env, name)
+    if walls:
+        write_periodic_box(case, (0.01, 0.01, 0.01), (8, 8, 8))
+        mesh = case.path / "system" / "blockMeshDict"
+        mesh.write_text(re.sub(r"type cyclic; neighbourPatch \w+;", "type wall;",
+                               mesh.read_text()))
+        for field, condition in (("U", "noSlip"), ("p_rgh", "zeroGradient")):
+            path = case.path / "0" / field
+            path.write_text(path.read_text().replace(
+                "type            cyclic;", f"type            {condition};"))
+    properties = case.path / "constant" / "particleProperties"
+    properties.write_text(properties.read_text()
+                          .replace("motion      prescribed;", "motion      free;")
+                          .replace("density     1000;", "density     2000;")
+                          .replace(f"velocity    ({SPEED!r} 0 0);",
+                                   f"velocity    ({SPEED!r} {0.3*SPEED!r} 0);"))
+    velocity = case.path / "0" / "U"
+    velocity.write_text(velocity.read_text().replace(f"uniform ({SPEED!r} 0 0)",
+                                                     "uniform (0 0 0)"))
+    case.set("system/controlDict", "endTime", end_time)
+    case.run("blockMesh")
+    return case
+
+
 def test_refinement_keeps_the_mixture_momentum_and_continuity_under_a_heavy_free_sphere(
         tmp_path, foam_env):
     """A free sphere twice as heavy as the water launched through it at
@@ -120,18 +150,7 @@ def test_refinement_keeps_the_mixture_momentum_and_continuity_under_a_heavy_free
     sphere's solid volume stays its volume. (With the sphere's fractions of
     a quadrature, good to 1e-7, the first refinement changed the momentum by
     7e-8 of itself.)"""
-    case = translating_case(tmp_path, foam_env, "heavy")
-    properties = case.path / "constant" / "particleProperties"
-    properties.write_text(properties.read_text()
-                          .replace("motion      prescribed;", "motion      free;")
-                          .replace("density     1000;", "density     2000;")
-                          .replace(f"velocity    ({SPEED!r} 0 0);",
-                                   f"velocity    ({SPEED!r} {0.3*SPEED!r} 0);"))
-    velocity = case.path / "0" / "U"
-    velocity.write_text(velocity.read_text().replace(f"uniform ({SPEED!r} 0 0)",
-                                                     "uniform (0 0 0)"))
-    case.set("system/controlDict", "endTime", 0.1)
-    case.run("blockMesh")
+    case = heavy_case(tmp_path, foam_env, "heavy")
     case.run("pimpleDLMFoam")
 
     lines = (case.path / "log.pimpleDLMFoam").read_text().splitlines()
@@ -154,9 +173,73 @@ def test_refinement_keeps_the_mixture_momentum_and_continuity_under_a_heavy_free
     assert np.dot(alpha, cells) == pytest.approx(4/3*math.pi*RADIUS**3, rel=1e-12, abs=0)
 
 
+def test_refined_run_restarts_exactly_and_runs_on_two_ranks_as_in_serial(
+        tmp_path, foam_env):
+    """The heavy sphere's refined run, restarted from a written time (its
+    refined mesh, cell levels and refinement history, and the face velocity
+    read back), continues as if never stopped: the same trajectory to 1e-12
+    (to the bit here) and the same cells. In a box with walls on 2 ranks
+    (METIS) the mesh follows the sphere across the processor boundary with
+    the same cells as in serial, and with converged linear solvers the
+    trajectory matches to 1e-6 (1e-13 here). (In the periodic box the
+    unrefined run's 2 ranks already differ from serial by 4e-4 of the
+    velocity where the sphere's stencils reach the cyclic patches: a fault
+    of the static code, not of refinement, to be found.) (OpenFOAM's dynamicRefineFvMesh selects cells from
+    point values of each processor's own cells: 2423 cells on 2 ranks
+    against 2430 in serial at the first change, and trajectories 1e-5
+    apart; and CorrectPhi's reference cell on every processor left the flux
+    divergent.)"""
+    serial = heavy_case(tmp_path, foam_env, "serial")
+    serial.run("pimpleDLMFoam")
+    track = serial.history()["sphere"]
+
+    restarted = heavy_case(tmp_path, foam_env, "restarted", end_time=0.05)
+    restarted.run("pimpleDLMFoam")
+    restarted.set("system/controlDict", "endTime", 0.1)
+    restarted.run("pimpleDLMFoam", log="pimpleDLMFoam.restart")
+    again = restarted.history("0.05")["sphere"]
+    tail = track[track[:, 0] > 0.05 + 1e-9]
+    assert len(again) == len(tail) == 5
+    assert np.abs(again[:, 1:10] - tail[:, 1:10]).max() < 1e-12
+    assert restarted.internal_field("0.1/U").shape == serial.internal_field("0.1/U").shape
+
+    def cell_counts(log):
+        return [int(line.split()[2]) for line in log.splitlines()
+                if line.startswith("Mesh changed:")]
+
+    def boxed_case(name):
+        case = heavy_case(tmp_path, foam_env, name, walls=True)
+        # Converged linear solvers: the two runs then differ by round-off
+        for field in ["p_rgh", "p_rghFinal"]:
+            case.set("system/fvSolution", f"solvers/{field}/tolerance", 1e-13)
+            case.set("system/fvSolution", f"solvers/{field}/relTol", 0)
+        case.set("system/fvSolution", "solvers/U/tolerance", 1e-14)
+        return case
+
+    boxed = boxed_case("boxed")
+    boxed.run("pimpleDLMFoam")
+    parallel = boxed_case("parallel")
+    shutil.copy(HERE / "cases" / "sphereBox" / "system" / "decomposeParDict",
+                parallel.path / "system")
+    parallel.run("decomposePar")
+    parallel.run("pimpleDLMFoam", np=2)
+    for processor in ["processor0", "processor1"]:
+        assert parallel.internal_field(f"{processor}/0.1/alpha.solid").max() > 0.5
+    assert cell_counts((parallel.path / "log.pimpleDLMFoam").read_text()) == \
+        cell_counts((boxed.path / "log.pimpleDLMFoam").read_text())
+    s, p = boxed.history()["sphere"], parallel.history()["sphere"]
+    assert s.shape == p.shape
+    # Displacement, velocity and angular velocity each to 1e-6 relative
+    displacement = s[:, 1:4] - s[0, 1:4] + s[0, 4:7]*s[0, 0]
+    for columns, scale in [(slice(1, 4), np.abs(displacement).max()),
+                           (slice(4, 7), np.abs(s[:, 4:7]).max()),
+                           (slice(7, 10), np.abs(s[:, 7:10]).max())]:
+        assert np.abs(p[:, columns] - s[:, columns]).max() < 1e-6*scale
+
+
 @pytest.mark.parametrize("tutorial, mesh_type, message", [
     ("periodicArray", "dynamicInkJetFvMesh", "may only be refined"),
-    ("draftingKissingTumbling", "dynamicRefineFvMesh", "refinement works on 3D meshes only"),
+    ("draftingKissingTumbling", "dlmRefineFvMesh", "refinement works on 3D meshes only"),
 ])
 def test_a_dynamic_mesh_the_particles_cannot_follow_is_an_input_error(
         tmp_path, foam_env, tutorial, mesh_type, message):
@@ -164,7 +247,7 @@ def test_a_dynamic_mesh_the_particles_cannot_follow_is_an_input_error(
     split its one-cell-thick layer), stops the run naming the dictionary."""
     case = Case.copy(HERE.parent / "tutorials" / tutorial, tmp_path / tutorial, foam_env)
     (case.path / "constant" / "dynamicMeshDict").write_text(
-        REFINE_AT_SURFACES.replace("dynamicFvMesh   dynamicRefineFvMesh;",
+        REFINE_AT_SURFACES.replace("dynamicFvMesh   dlmRefineFvMesh;",
                                    f"dynamicFvMesh   {mesh_type};"
                                    "\namplitude 0.1; frequency 10; refPlaneX 0;"))
     case.run("blockMesh")

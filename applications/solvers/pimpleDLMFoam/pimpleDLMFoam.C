@@ -66,7 +66,7 @@ Description
 
 #include "fvCFD.H"
 #include "dynamicRefineFvMesh.H"
-#include "CorrectPhi.H"
+#include "syncTools.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "dlmParticleCloud.H"
