@@ -8,6 +8,7 @@
 #include "dlmParticleCloud.H"
 #include "syncTools.H"
 #include "emptyFvPatch.H"
+#include "cyclicPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -79,8 +80,12 @@ void Foam::forcedRegions::setMeshGeometry()
     }
 
     // The cell behind each boundary face's cell, along the inward normal,
-    // and its offset; the offsets of the other side of coupled faces
+    // and its offset; the offsets of the other side of coupled faces. The
+    // cell behind may lie across a cyclic patch of this processor (a
+    // processor boundary next to a cyclic one: without it the profile
+    // there lost its second sample, which the serial run has)
     const vectorField& C = mesh_.C();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     forAll(secondLayerCell_, bFacei)
     {
         const label facei = mesh_.nInternalFaces() + bFacei;
@@ -89,15 +94,32 @@ void Foam::forcedRegions::setMeshGeometry()
         scalar bestCos = 0.9;
         for (const label facej : mesh_.cells()[celli])
         {
-            if (!mesh_.isInternalFace(facej))
+            label cellj = -1;
+            vector d(Zero);
+            if (mesh_.isInternalFace(facej))
+            {
+                cellj =
+                    mesh_.faceOwner()[facej] == celli
+                  ? mesh_.faceNeighbour()[facej]
+                  : mesh_.faceOwner()[facej];
+                d = C[cellj] - C[celli];
+            }
+            else
+            {
+                const label patchj = patches.whichPatch(facej);
+                if (isA<cyclicPolyPatch>(patches[patchj]))
+                {
+                    const label localFacej = facej - patches[patchj].start();
+                    cellj =
+                        refCast<const cyclicPolyPatch>(patches[patchj])
+                       .neighbPatch().faceCells()[localFacej];
+                    d = coupledDeltas_[patchj][localFacej];
+                }
+            }
+            if (cellj < 0)
             {
                 continue;
             }
-            const label cellj =
-                mesh_.faceOwner()[facej] == celli
-              ? mesh_.faceNeighbour()[facej]
-              : mesh_.faceOwner()[facej];
-            const vector d(C[cellj] - C[celli]);
             const scalar c = (d & inward)/mag(d);
             if (c > bestCos)
             {
