@@ -99,14 +99,17 @@ int main(int argc, char *argv[])
 
     #include "createFields.H"
     #include "initContinuityErrs.H"
-    #include "initialParticleVelocity.H"
-    #include "createFaceVelocity.H"
-    #include "CourantNo.H"
-    #include "setInitialDeltaT.H"
 
     // Smallest squared distance between neighbouring cell centres
     scalar minDeltaSqr = sqr(particles.cellSizeMin());
     scalar aspectRatio = cellAspectRatioMax(mesh);
+
+    #include "createFaceVelocity.H"
+    #include "refineAtStart.H"
+    #include "initialParticleVelocity.H"
+    #include "CourantNo.H"
+    #include "setInitialDeltaT.H"
+
     Info<< "Largest cell aspect ratio: " << aspectRatio << endl;
     #include "viscousNumber.H"
 

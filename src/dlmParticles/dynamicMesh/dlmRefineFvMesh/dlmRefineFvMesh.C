@@ -6,6 +6,7 @@
 
 #include "dlmRefineFvMesh.H"
 #include "syncTools.H"
+#include "volFields.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -93,6 +94,68 @@ Foam::dlmRefineFvMesh::dlmRefineFvMesh(const IOobject& io)
 :
     dynamicRefineFvMesh(io)
 {}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::dlmRefineFvMesh::update()
+{
+    if (time().timeIndex() > 0)
+    {
+        return dynamicRefineFvMesh::update();
+    }
+
+    const dictionary coeffs
+    (
+        IOdictionary
+        (
+            IOobject
+            (
+                "dynamicMeshDict",
+                time().constant(),
+                *this,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        ).optionalSubDict(dynamicRefineFvMesh::typeName + "Coeffs")
+    );
+
+    bool changed = false;
+    const label maxCells = coeffs.get<label>("maxCells");
+    if
+    (
+        coeffs.get<label>("refineInterval") > 0
+     && globalData().nTotalCells() < maxCells
+    )
+    {
+        bitSet candidates(nCells());
+        selectRefineCandidates
+        (
+            coeffs.get<scalar>("lowerRefineLevel"),
+            coeffs.get<scalar>("upperRefineLevel"),
+            lookupObject<volScalarField>(coeffs.get<word>("field")),
+            candidates
+        );
+        const labelList cellsToRefine
+        (
+            selectRefineCells
+            (
+                maxCells,
+                coeffs.get<label>("maxRefinement"),
+                candidates
+            )
+        );
+        if (returnReduce(cellsToRefine.size(), sumOp<label>()) > 0)
+        {
+            refine(cellsToRefine);
+            changed = true;
+        }
+    }
+
+    topoChanging(changed);
+    return changed;
+}
 
 
 // ************************************************************************* //
