@@ -247,3 +247,23 @@ def test_a_dynamic_mesh_the_particles_cannot_follow_is_an_input_error(
     assert result.returncode != 0
     assert "constant/dynamicMeshDict" in result.log
     assert message in result.log
+
+
+def test_a_fixed_sphere_keeps_its_refined_mesh(tmp_path, foam_env):
+    """A fixed sphere in the periodic box: refined before the first step,
+    its mesh settles at the first step (the start's surplus of refined
+    cells unrefined) and then stays the same, step after step: no churn of
+    refining and unrefining the same cells."""
+    case = translating_case(tmp_path, foam_env, "fixed")
+    properties = case.path / "constant" / "particleProperties"
+    properties.write_text(properties.read_text()
+                          .replace("motion      prescribed;", "motion      fixed;")
+                          .replace(f"velocity    ({SPEED!r} 0 0);", ""))
+    case.set("system/controlDict", "endTime", 0.12)
+    case.run("blockMesh")
+    case.run("pimpleDLMFoam")
+    log = (case.path / "log.pimpleDLMFoam").read_text()
+    loop = log[log.index("Starting time loop"):]
+    assert loop.count("\nTime = ") == 12
+    assert loop.count("Mesh changed:") <= 1
+    assert "Mesh changed:" not in loop[loop.index("\nTime = 0.02\n"):]
