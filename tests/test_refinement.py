@@ -267,3 +267,15 @@ def test_a_fixed_sphere_keeps_its_refined_mesh(tmp_path, foam_env):
     assert loop.count("\nTime = ") == 12
     assert loop.count("Mesh changed:") <= 1
     assert "Mesh changed:" not in loop[loop.index("\nTime = 0.02\n"):]
+
+
+def test_refinement_stopped_by_max_cells_is_reported(tmp_path, foam_env):
+    """With maxCells below what the sphere's surface needs the mesh stops
+    refining; the log says so once (dynamicRefineFvMesh says nothing)."""
+    case = translating_case(tmp_path, foam_env, "capped")
+    (case.path / "constant" / "dynamicMeshDict").write_text(
+        REFINE_AT_SURFACES.replace("maxCells        1000000;", "maxCells        600;"))
+    case.set("system/controlDict", "endTime", 0.03)
+    case.run("blockMesh")
+    log = case.run("pimpleDLMFoam").log
+    assert log.count("maxCells 600: nothing is refined any more") == 1

@@ -18,6 +18,38 @@ namespace Foam
 }
 
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dlmRefineFvMesh::warnAtMaxCells()
+{
+    const label maxCells =
+        IOdictionary
+        (
+            IOobject
+            (
+                "dynamicMeshDict",
+                time().constant(),
+                *this,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        ).optionalSubDict(dynamicRefineFvMesh::typeName + "Coeffs")
+       .get<label>("maxCells");
+
+    const label nCells = globalData().nTotalCells();
+    if (nCells >= maxCells && !atMaxCells_)
+    {
+        WarningInFunction
+            << time().constant()/"dynamicMeshDict" << ": the mesh has "
+            << nCells << " cells, maxCells " << maxCells << ": nothing is"
+            << " refined any more, near the particles neither, until cells"
+            << " are unrefined" << endl;
+    }
+    atMaxCells_ = nCells >= maxCells;
+}
+
+
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
 void Foam::dlmRefineFvMesh::selectRefineCandidates
@@ -92,7 +124,8 @@ Foam::labelList Foam::dlmRefineFvMesh::selectUnrefinePoints
 
 Foam::dlmRefineFvMesh::dlmRefineFvMesh(const IOobject& io)
 :
-    dynamicRefineFvMesh(io)
+    dynamicRefineFvMesh(io),
+    atMaxCells_(false)
 {}
 
 
@@ -102,7 +135,9 @@ bool Foam::dlmRefineFvMesh::update()
 {
     if (time().timeIndex() > 0)
     {
-        return dynamicRefineFvMesh::update();
+        const bool changed = dynamicRefineFvMesh::update();
+        warnAtMaxCells();
+        return changed;
     }
 
     const dictionary coeffs
@@ -154,6 +189,7 @@ bool Foam::dlmRefineFvMesh::update()
     }
 
     topoChanging(changed);
+    warnAtMaxCells();
     return changed;
 }
 
