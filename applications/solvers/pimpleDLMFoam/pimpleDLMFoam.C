@@ -66,7 +66,6 @@ Description
 
 #include "fvCFD.H"
 #include "dynamicRefineFvMesh.H"
-#include "syncTools.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "dlmParticleCloud.H"
