@@ -65,6 +65,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "dynamicRefineFvMesh.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "dlmParticleCloud.H"
@@ -89,7 +90,7 @@ int main(int argc, char *argv[])
     #include "setRootCaseLists.H"
     #include "createTime.H"
     runProgress progress(runTime);
-    #include "createMesh.H"
+    #include "createDynamicMesh.H"
     #include "createPimpleControl.H"
     #include "createTimeControls.H"
     #include "checkDeltaT.H"
@@ -97,13 +98,17 @@ int main(int argc, char *argv[])
 
     #include "createFields.H"
     #include "initContinuityErrs.H"
+
+    // Smallest squared distance between neighbouring cell centres
+    scalar minDeltaSqr = sqr(particles.cellSizeMin());
+    scalar aspectRatio = cellAspectRatioMax(mesh);
+
+    #include "createFaceVelocity.H"
+    #include "refineAtStart.H"
     #include "initialParticleVelocity.H"
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
 
-    // Smallest squared distance between neighbouring cell centres
-    const scalar minDeltaSqr = sqr(particles.cellSizeMin());
-    const scalar aspectRatio = cellAspectRatioMax(mesh);
     Info<< "Largest cell aspect ratio: " << aspectRatio << endl;
     #include "viscousNumber.H"
 
@@ -120,6 +125,7 @@ int main(int argc, char *argv[])
     {
         #include "readTimeControls.H"
         #include "checkTimeControls.H"
+        #include "updateMesh.H"
         #include "CourantNo.H"
         #include "particleCourantNo.H"
         #include "setDeltaT.H"

@@ -63,8 +63,14 @@ scalar gridVolume
 )
 {
     const scalar R = shape.boundingRadius();
-    const label n = label(std::ceil(2*R/h)) + 2;
-    const point origin(X - (R + h)*vector::one);
+    // The grid of cells of side h from the global origin: X's place in its
+    // cell sets how the surface cuts the cells
+    const label n = label(std::ceil(2*R/h)) + 3;
+    point origin(X - (R + h)*vector::one);
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        origin[d] = h*std::floor(origin[d]/h);
+    }
     const vector split(1, 1, twoD ? 0 : 1);
     const label nz = twoD ? 1 : n;
     const scalar hz = twoD ? 1 : h;
@@ -188,19 +194,26 @@ TEST_CASE("sphere fractions integrate to its volume", "[geometry]")
     REQUIRE(shape->volume() == Approx(exact));
 
     Random rnd(42);
-    for (const label cellsPerDiameter : {8, 12, 16})
+    for (const label cellsPerDiameter : {3, 4, 8, 12, 16})
     {
         const scalar h = 2*R/cellsPerDiameter;
-        for (label sample = 0; sample < 3; ++sample)
+        // Random centres, and centres on a grid node or just off it, where
+        // the surface grazes cell faces and edges
+        for (label sample = 0; sample < 5; ++sample)
         {
             const point X
             (
-                h*rnd.sample01<scalar>(),
-                h*rnd.sample01<scalar>(),
-                h*rnd.sample01<scalar>()
+                sample == 3 ? point::zero
+              : sample == 4 ? point(1e-9*h, 0.5*h, 1e-12*h)
+              : point
+                (
+                    h*rnd.sample01<scalar>(),
+                    h*rnd.sample01<scalar>(),
+                    h*rnd.sample01<scalar>()
+                )
             );
-            INFO("cells per diameter " << cellsPerDiameter);
-            CHECK(gridVolume(*shape, X, h, false)/exact == Approx(1).epsilon(1e-9));
+            INFO("cells per diameter " << cellsPerDiameter << ", sample " << sample << ", error " << gridVolume(*shape, X, h, false)/exact - 1);
+            CHECK(gridVolume(*shape, X, h, false)/exact == Approx(1).epsilon(1e-13));
             CHECK
             (
                 gridVolume(*shape, X, h, false, true)/exact

@@ -7,7 +7,8 @@
 #include "cutCellFraction.H"
 #include "mathematicalConstants.H"
 #include "FixedList.H"
-#include "DynamicList.H"
+#include "vector2D.H"
+
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -21,7 +22,10 @@ namespace
         const scalar t = Foam::min(Foam::max(y/rho, -1.0), 1.0);
         return
             0.5*Foam::sqr(rho)
-           *(t*Foam::sqrt(1 - t*t) + Foam::asin(t) + 0.5*Foam::constant::mathematical::pi);
+           *(
+                t*Foam::sqrt((1 - t)*(1 + t)) + Foam::asin(t)
+              + 0.5*Foam::constant::mathematical::pi
+            );
     }
 
     // Integral over y in [y0, y1] of clamp(b, -s, s), s = sqrt(rho^2 - y^2)
@@ -48,7 +52,7 @@ namespace
         }
 
         // |y| < yb: the chord's part below b ends at b; elsewhere at +-s
-        const scalar yb = Foam::sqrt(rho*rho - b*b);
+        const scalar yb = Foam::sqrt((rho - b)*(rho + b));
         const scalar lo = Foam::max(y0, -yb);
         const scalar hi = Foam::min(y1, yb);
         if (hi <= lo)
@@ -60,17 +64,82 @@ namespace
         return (b > 0 ? 1 : -1)*(S1 - S0 - inner) + b*(hi - lo);
     }
 
-    // Gauss-Legendre points and weights on [-1, 1]
-    const Foam::FixedList<scalar, 4> gaussPoints
-    ({
-        -0.8611363115940526, -0.3399810435848563,
-        0.3399810435848563, 0.8611363115940526
-    });
-    const Foam::FixedList<scalar, 4> gaussWeights
-    ({
-        0.3478548451374538, 0.6521451548625461,
-        0.6521451548625461, 0.3478548451374538
-    });
+    // Antiderivative over x of the area of the unit ball's slice at x in
+    // the quadrant y > b, z > c (b, c >= 0, x^2 + b^2 + c^2 <= 1), given
+    // sb = sqrt(1 - x^2 - b^2) and sc = sqrt(1 - x^2 - c^2). The slice's
+    // area is (rho^2 (pi/2 - asin(b/rho) - asin(c/rho)) - b sb - c sc)/2
+    // + b c with rho^2 = 1 - x^2; its terms integrate in closed form (the
+    // arcsines by parts), written with atan2 of the square roots, which
+    // keeps them accurate where a square root vanishes
+    scalar quadrantSlicePrimitive
+    (
+        const scalar x,
+        const scalar b,
+        const scalar c,
+        const scalar sb,
+        const scalar sc
+    )
+    {
+        const scalar v = x - x*x*x/3;
+
+        // Integral of (1 - x^2) asin(d/rho) (d = b or c), and of the half
+        // chord d s: s = sqrt(k^2 - x^2), k^2 = 1 - d^2
+        auto arcsinePart = [x, v](const scalar d, const scalar s)
+        {
+            const scalar k2 = (1 - d)*(1 + d);
+            const scalar t = Foam::atan2(x, s);
+            return
+                v*Foam::atan2(d, s)
+              - d/3*(0.5*(k2*t - x*s) - 2*t)
+              - 2.0/3.0*Foam::atan2(x*d, s)
+              + 0.5*d*(x*s + k2*t);
+        };
+
+        return
+            0.25*Foam::constant::mathematical::pi*v
+          - 0.5*(arcsinePart(b, sb) + arcsinePart(c, sc))
+          + b*c*x;
+    }
+
+    // Volume of the unit ball in x > a, y > b, z > c (a, b, c >= 0)
+    scalar unitOctantVolume(const scalar a, const scalar b, const scalar c)
+    {
+        const scalar top = 1 - b*b - c*c;
+        if (a >= 1 || a*a >= top)
+        {
+            return 0;
+        }
+        const scalar x1 = Foam::sqrt(top);
+        const scalar sb = Foam::sqrt(Foam::max(1 - a*a - b*b, scalar(0)));
+        const scalar sc = Foam::sqrt(Foam::max(1 - a*a - c*c, scalar(0)));
+        return
+            quadrantSlicePrimitive(x1, b, c, c, b)
+          - quadrantSlicePrimitive(a, b, c, sb, sc);
+    }
+
+    // Volume of the unit ball in the box [lo, hi] of the positive octant:
+    // the octant volumes of its corners, with alternating signs
+    scalar unitOctantBoxVolume(const Foam::vector& lo, const Foam::vector& hi)
+    {
+        scalar volume = 0;
+        for (int i = 0; i < 2; ++i)
+        {
+            for (int j = 0; j < 2; ++j)
+            {
+                for (int k = 0; k < 2; ++k)
+                {
+                    const scalar corner = unitOctantVolume
+                    (
+                        i ? hi.x() : lo.x(),
+                        j ? hi.y() : lo.y(),
+                        k ? hi.z() : lo.z()
+                    );
+                    volume += (i + j + k) % 2 ? -corner : corner;
+                }
+            }
+        }
+        return volume;
+    }
 }
 
 
@@ -108,68 +177,45 @@ Foam::scalar Foam::cutCellFraction::sphereBoxVolume
     const vector& hi
 )
 {
-    const scalar x0 = max(lo.x(), -R);
-    const scalar x1 = min(hi.x(), R);
-    if (x1 <= x0)
+    // In units of R, split at the centre's planes, each part reflected
+    // into the positive octant (at most eight parts; one for most cells)
+    FixedList<FixedList<vector2D, 2>, 3> parts;
+    FixedList<label, 3> nParts;
+    for (direction d = 0; d < 3; ++d)
     {
-        return 0;
-    }
-
-    // Slices x where the slice circle meets an edge or a corner of the
-    // rectangle: the area is smooth between them
-    DynamicList<scalar> breaks(16);
-    breaks.append(x0);
-    const FixedList<scalar, 2> ys({lo.y(), hi.y()});
-    const FixedList<scalar, 2> zs({lo.z(), hi.z()});
-    DynamicList<scalar> reaches(8);
-    for (const scalar y : ys)
-    {
-        reaches.append(mag(y));
-        for (const scalar z : zs)
+        const scalar a = min(max(lo[d]/R, scalar(-1)), scalar(1));
+        const scalar b = min(max(hi[d]/R, scalar(-1)), scalar(1));
+        if (b <= a)
         {
-            reaches.append(sqrt(y*y + z*z));
+            return 0;
+        }
+        nParts[d] = 0;
+        if (a < 0)
+        {
+            parts[d][nParts[d]++] = vector2D(max(-b, scalar(0)), -a);
+        }
+        if (b > 0)
+        {
+            parts[d][nParts[d]++] = vector2D(max(a, scalar(0)), b);
         }
     }
-    for (const scalar z : zs)
+
+    scalar volume = 0;
+    for (label i = 0; i < nParts[0]; ++i)
     {
-        reaches.append(mag(z));
-    }
-    for (const scalar c : reaches)
-    {
-        if (c < R)
+        for (label j = 0; j < nParts[1]; ++j)
         {
-            const scalar x = sqrt(R*R - c*c);
-            for (const scalar xb : {-x, x})
+            for (label k = 0; k < nParts[2]; ++k)
             {
-                if (xb > x0 && xb < x1)
-                {
-                    breaks.append(xb);
-                }
+                volume += unitOctantBoxVolume
+                (
+                    vector(parts[0][i].x(), parts[1][j].x(), parts[2][k].x()),
+                    vector(parts[0][i].y(), parts[1][j].y(), parts[2][k].y())
+                );
             }
         }
     }
-    breaks.append(x1);
-    Foam::sort(breaks);
-
-    scalar volume = 0;
-    for (label i = 0; i + 1 < breaks.size(); ++i)
-    {
-        const scalar mid = 0.5*(breaks[i] + breaks[i + 1]);
-        const scalar half = 0.5*(breaks[i + 1] - breaks[i]);
-        if (half <= 0)
-        {
-            continue;
-        }
-        for (label k = 0; k < gaussPoints.size(); ++k)
-        {
-            const scalar x = mid + half*gaussPoints[k];
-            const scalar rho = sqrt(max(R*R - x*x, scalar(0)));
-            volume +=
-                half*gaussWeights[k]
-               *circleRectangleArea(rho, lo.y(), hi.y(), lo.z(), hi.z());
-        }
-    }
-    return volume;
+    return pow3(R)*volume;
 }
 
 

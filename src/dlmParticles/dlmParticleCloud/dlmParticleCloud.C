@@ -1121,6 +1121,44 @@ bool Foam::dlmParticleCloud::removeLeaving()
 }
 
 
+void Foam::dlmParticleCloud::updateCellGeometry()
+{
+    cellSizes_ = gMinMax(centreDistances(mesh_)());
+
+    // The cell searches use the tet decomposition, which every processor
+    // must build together (its first use is collective): a search that
+    // finds nothing on one processor would otherwise leave the others
+    // waiting
+    mesh_.tetBasePtIs();
+
+    const pointField& points = mesh_.points();
+    const labelListList& cellPoints = mesh_.cellPoints();
+    const scalarField& V = mesh_.V();
+    cellBoxes_.setSize(mesh_.nCells());
+    cellIsBox_.setSize(mesh_.nCells());
+    forAll(cellBoxes_, celli)
+    {
+        cellBoxes_[celli] = boundBox(points, cellPoints[celli], false);
+        cellIsBox_[celli] =
+            mag(cellBoxes_[celli].volume() - V[celli]) < 1e-6*V[celli];
+    }
+    cellBins_.reset(new cellBins(cellBoxes_));
+
+    boundaryCell_.setSize(mesh_.nCells());
+    boundaryCell_ = false;
+    for (const polyPatch& patch : mesh_.boundaryMesh())
+    {
+        if (!patch.coupled() && !isA<emptyPolyPatch>(patch))
+        {
+            for (const label celli : patch.faceCells())
+            {
+                boundaryCell_[celli] = true;
+            }
+        }
+    }
+}
+
+
 void Foam::dlmParticleCloud::updateFractions(const label i)
 {
     const dlmParticle& p = particles_[i];
@@ -1492,10 +1530,6 @@ Foam::dlmParticleCloud::dlmParticleCloud
     historyInterval_(properties_.getOrDefault<label>("historyInterval", 1)),
     nParticles_(0),
     wrapsPeriodic_(false),
-    cellSizes_(gMinMax(centreDistances(mesh)())),
-    cellBoxes_(mesh.nCells()),
-    cellIsBox_(mesh.nCells()),
-    boundaryCell_(mesh.nCells(), false),
     touchingBoundary_(-1),
     leftMesh_(-1),
     overlapping_(-1, -1),
@@ -1572,37 +1606,11 @@ Foam::dlmParticleCloud::dlmParticleCloud
         readParticles(state.subDict("particles"));
     }
 
-    // The cell searches use the tet decomposition, which every processor
-    // must build together (its first use is collective): a search that
-    // finds nothing on one processor would otherwise leave the others
-    // waiting
-    mesh.tetBasePtIs();
-
-    const pointField& points = mesh.points();
-    const labelListList& cellPoints = mesh.cellPoints();
-    const scalarField& V = mesh.V();
-    forAll(cellBoxes_, celli)
-    {
-        cellBoxes_[celli] = boundBox(points, cellPoints[celli], false);
-        cellIsBox_[celli] =
-            mag(cellBoxes_[celli].volume() - V[celli]) < 1e-6*V[celli];
-    }
-    cellBins_.reset(new cellBins(cellBoxes_));
+    updateCellGeometry();
 
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         splitDirections_[d] = mesh.solutionD()[d] == 1 ? 1 : 0;
-    }
-
-    for (const polyPatch& patch : mesh.boundaryMesh())
-    {
-        if (!patch.coupled() && !isA<emptyPolyPatch>(patch))
-        {
-            for (const label celli : patch.faceCells())
-            {
-                boundaryCell_[celli] = true;
-            }
-        }
     }
 
     checkParticles();
@@ -1669,6 +1677,22 @@ Foam::dlmParticleCloud::dlmParticleCloud
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dlmParticleCloud::updateMesh()
+{
+    updateCellGeometry();
+
+    if (resolved_)
+    {
+        forAll(particles_, i)
+        {
+            updateFractions(i);
+        }
+        reduceTouching();
+        updateFields();
+    }
+}
+
 
 bool Foam::dlmParticleCloud::moving() const
 {

@@ -8,6 +8,7 @@
 #include "dlmParticleCloud.H"
 #include "syncTools.H"
 #include "emptyFvPatch.H"
+#include "cyclicPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -22,55 +23,103 @@ namespace
 
 Foam::forcedRegions::forcedRegions(const fvMesh& mesh)
 :
-    mesh_(mesh),
-    inside_(mesh.nCells(), false),
-    regionOwner_(mesh.nCells(), -1),
-    insideOf_(mesh.nCells(), -1),
-    insideAcross_(mesh.nBoundaryFaces(), -1),
-    insideSecondLayer_(mesh.nBoundaryFaces(), -1),
-    nextTo_(mesh.nCells(), -1),
-    nextToAcross_(mesh.nBoundaryFaces(), -1),
-    nextToSecondLayer_(mesh.nBoundaryFaces(), -1),
-    leftToFlow_(mesh.nCells(), 0),
-    leftToFlowAcross_(mesh.nBoundaryFaces(), 0),
-    leftToFlowSecondLayer_(mesh.nBoundaryFaces(), 0),
-    coupledDeltas_(mesh.boundary().size()),
-    secondLayerCell_(mesh.nBoundaryFaces(), -1),
-    secondLayerDelta_(mesh.nBoundaryFaces(), Zero),
-    secondLayerAcross_(mesh.nBoundaryFaces(), false)
+    mesh_(mesh)
 {
-    forAll(mesh.boundary(), patchi)
+    setMeshGeometry();
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::forcedRegions::setMeshGeometry()
+{
+    const label nCells = mesh_.nCells();
+    const label nBoundaryFaces = mesh_.nBoundaryFaces();
+    inside_.setSize(nCells);
+    inside_ = false;
+    regionOwner_.setSize(nCells);
+    regionOwner_ = -1;
+    insideOf_.setSize(nCells);
+    insideOf_ = -1;
+    nextTo_.setSize(nCells);
+    nextTo_ = -1;
+    leftToFlow_.setSize(nCells);
+    leftToFlow_ = 0;
+    for
+    (
+        labelList* faceList :
+        {
+            &insideAcross_, &insideSecondLayer_, &nextToAcross_,
+            &nextToSecondLayer_, &secondLayerCell_
+        }
+    )
     {
-        if (mesh.boundary()[patchi].coupled())
+        faceList->setSize(nBoundaryFaces);
+        *faceList = -1;
+    }
+    leftToFlowAcross_.setSize(nBoundaryFaces);
+    leftToFlowAcross_ = 0;
+    leftToFlowSecondLayer_.setSize(nBoundaryFaces);
+    leftToFlowSecondLayer_ = 0;
+    secondLayerDelta_.setSize(nBoundaryFaces);
+    secondLayerDelta_ = Zero;
+    secondLayerAcross_.setSize(nBoundaryFaces);
+    secondLayerAcross_ = false;
+    coupledDeltas_.clear();
+    coupledDeltas_.setSize(mesh_.boundary().size());
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (mesh_.boundary()[patchi].coupled())
         {
             coupledDeltas_.set
             (
                 patchi,
-                new vectorField(mesh.boundary()[patchi].delta())
+                new vectorField(mesh_.boundary()[patchi].delta())
             );
         }
     }
 
     // The cell behind each boundary face's cell, along the inward normal,
-    // and its offset; the offsets of the other side of coupled faces
-    const vectorField& C = mesh.C();
+    // and its offset; the offsets of the other side of coupled faces. The
+    // cell behind may lie across a cyclic patch of this processor (a
+    // processor boundary next to a cyclic one: without it the profile
+    // there lost its second sample, which the serial run has)
+    const vectorField& C = mesh_.C();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     forAll(secondLayerCell_, bFacei)
     {
-        const label facei = mesh.nInternalFaces() + bFacei;
-        const label celli = mesh.faceOwner()[facei];
-        const vector inward(-mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]));
+        const label facei = mesh_.nInternalFaces() + bFacei;
+        const label celli = mesh_.faceOwner()[facei];
+        const vector inward(-mesh_.faceAreas()[facei]/mag(mesh_.faceAreas()[facei]));
         scalar bestCos = 0.9;
-        for (const label facej : mesh.cells()[celli])
+        for (const label facej : mesh_.cells()[celli])
         {
-            if (!mesh.isInternalFace(facej))
+            label cellj = -1;
+            vector d(Zero);
+            if (mesh_.isInternalFace(facej))
+            {
+                cellj =
+                    mesh_.faceOwner()[facej] == celli
+                  ? mesh_.faceNeighbour()[facej]
+                  : mesh_.faceOwner()[facej];
+                d = C[cellj] - C[celli];
+            }
+            else
+            {
+                const label patchj = patches.whichPatch(facej);
+                if (isA<cyclicPolyPatch>(patches[patchj]))
+                {
+                    const label localFacej = facej - patches[patchj].start();
+                    cellj =
+                        refCast<const cyclicPolyPatch>(patches[patchj])
+                       .neighbPatch().faceCells()[localFacej];
+                    d = coupledDeltas_[patchj][localFacej];
+                }
+            }
+            if (cellj < 0)
             {
                 continue;
             }
-            const label cellj =
-                mesh.faceOwner()[facej] == celli
-              ? mesh.faceNeighbour()[facej]
-              : mesh.faceOwner()[facej];
-            const vector d(C[cellj] - C[celli]);
             const scalar c = (d & inward)/mag(d);
             if (c > bestCos)
             {
@@ -80,21 +129,19 @@ Foam::forcedRegions::forcedRegions(const fvMesh& mesh)
             }
         }
     }
-    syncTools::swapBoundaryFaceList(mesh, secondLayerDelta_);
-    labelList hasSecondLayer(mesh.nBoundaryFaces());
+    syncTools::swapBoundaryFaceList(mesh_, secondLayerDelta_);
+    labelList hasSecondLayer(mesh_.nBoundaryFaces());
     forAll(hasSecondLayer, bFacei)
     {
         hasSecondLayer[bFacei] = secondLayerCell_[bFacei] >= 0 ? 1 : 0;
     }
-    syncTools::swapBoundaryFaceList(mesh, hasSecondLayer);
+    syncTools::swapBoundaryFaceList(mesh_, hasSecondLayer);
     forAll(hasSecondLayer, bFacei)
     {
         secondLayerAcross_[bFacei] = hasSecondLayer[bFacei] > 0;
     }
 }
 
-
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::forcedRegions::blendExcessMass()
 {
@@ -934,6 +981,29 @@ Foam::forcedRegions::sampledVelocities(const volVectorField& U) const
 }
 
 
+void Foam::forcedRegions::updateMesh()
+{
+    setMeshGeometry();
+    fixedNear_.clear();
+    for
+    (
+        List<DynamicList<label>>* perParticle :
+        {&regionCells_, &sampleStarts_, &sampleCells_}
+    )
+    {
+        perParticle->clear();
+    }
+    regionWeights_.clear();
+    regionArms_.clear();
+    regionNormals_.clear();
+    regionRigidShares_.clear();
+    sampleFaces_.clear();
+    sampleCoeffs_.clear();
+    nearDistance_.clear();
+    nearNormal_.clear();
+}
+
+
 Foam::label Foam::forcedRegions::update()
 {
     const label nParticles =
@@ -951,11 +1021,6 @@ Foam::label Foam::forcedRegions::update()
     // A profile whose first sample is a cell left to the flow is linear;
     // those cells are known once the regions are, which are then found
     // again where one is sampled (the same cells, other weights)
-    // A changed mesh has other cells: no fixed particle's distances hold
-    if (mesh_.changing())
-    {
-        fixedNear_.clear();
-    }
     findNearDistances();
     markInsideCells();
     label nSearches = 1;

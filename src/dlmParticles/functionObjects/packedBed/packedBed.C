@@ -63,6 +63,22 @@ Foam::scalar Foam::functionObjects::packedBed::diameter() const
 }
 
 
+void Foam::functionObjects::packedBed::findCells()
+{
+    DynamicList<label> cells;
+    const vectorField& C = mesh_.C();
+    forAll(C, celli)
+    {
+        if (box_.contains(C[celli]))
+        {
+            cells.append(celli);
+        }
+    }
+    cells_.transfer(cells);
+    cellsFound_ = true;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::functionObjects::packedBed::packedBed
@@ -77,7 +93,8 @@ Foam::functionObjects::packedBed::packedBed
     direction_(Zero),
     box_(mesh_.bounds()),
     pName_("p_rgh"),
-    diameter_(0)
+    diameter_(0),
+    cellsFound_(false)
 {
     read(dict);
 
@@ -175,18 +192,17 @@ bool Foam::functionObjects::packedBed::read(const dictionary& dict)
             << exit(FatalIOError);
     }
 
-    DynamicList<label> cells;
-    const vectorField& C = mesh_.C();
-    forAll(C, celli)
-    {
-        if (box_.contains(C[celli]))
-        {
-            cells.append(celli);
-        }
-    }
-    cells_.transfer(cells);
+    findCells();
 
     return true;
+}
+
+
+void Foam::functionObjects::packedBed::updateMesh(const mapPolyMesh&)
+{
+    // Called before the mesh has its new cell centres: found at the next
+    // write
+    cellsFound_ = false;
 }
 
 
@@ -198,6 +214,10 @@ bool Foam::functionObjects::packedBed::execute()
 
 bool Foam::functionObjects::packedBed::write()
 {
+    if (!cellsFound_)
+    {
+        findCells();
+    }
     const dlmParticleCloud& cloud =
         lookupObject<dlmParticleCloud>("particles");
     const volVectorField& U = lookupObject<volVectorField>("U");

@@ -318,6 +318,13 @@ void Foam::fv::rigidProjection::followParticles
 }
 
 
+void Foam::fv::rigidProjection::updateMesh(const dlmParticleCloud& cloud)
+{
+    treatment_->updateMesh();
+    recordFractions(cloud);
+}
+
+
 Foam::fv::rigidProjection* Foam::fv::rigidProjection::find
 (
     optionList& options

@@ -805,7 +805,7 @@ void Foam::fv::interpolated::setSlipParts(const List<vectorField>& sampled)
         mesh_.lookupObject<dlmParticleCloud>("particles");
     const PtrList<dlmParticle>& particles = cloud.particles();
     const vectorField& C = mesh_.C();
-    const scalar h = cloud.cellSizeMax();
+    const List<boundBox>& cellBoxes = cloud.cellBoxes();
     const scalar age = max(mesh_.time().value(), 0);
 
     // A particle lighter than its added mass (a sphere's: half the
@@ -872,9 +872,19 @@ void Foam::fv::interpolated::setSlipParts(const List<vectorField>& sampled)
                 )
             );
 
-            // The no-slip share: 1 where the layer is a cell or thicker.
-            // The layer grows as sqrt(nu t) from the flow's start until
-            // the flow has passed the particle's length
+            // The no-slip share: 1 where the layer is a cell or thicker
+            // (the cell's own size: on a refined mesh the cells at the
+            // surface are the smallest). The layer grows as sqrt(nu t)
+            // from the flow's start until the flow has passed the
+            // particle's length
+            scalar h = 0;
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                if (mesh_.solutionD()[d] == 1)
+                {
+                    h = max(h, cellBoxes[celli].span()[d]);
+                }
+            }
             const scalar layerTime =
                 slipSpeed*age > length ? length/slipSpeed : age;
             const scalar noSlip =
@@ -1082,6 +1092,23 @@ bool Foam::fv::interpolated::followContacts(vectorField& change) const
         }
     }
     return changed;
+}
+
+
+void Foam::fv::interpolated::updateMesh()
+{
+    const label nCells = mesh_.nCells();
+    heldForce_ = force_.primitiveField();
+    holdRate_.setSize(nCells);
+    holdRate_ = 0;
+    holdTarget_.setSize(nCells);
+    holdTarget_ = Zero;
+    appliedForce_.setSize(nCells);
+    appliedForce_ = Zero;
+    momentum_.clear();
+    regions_.updateMesh();
+    regionMoves_ = -1;
+    updateRegions();
 }
 
 

@@ -146,4 +146,8 @@ bool Foam::fv::mixedCellTreatment::followContacts(vectorField& change) const
 }
 
 
+void Foam::fv::mixedCellTreatment::updateMesh()
+{}
+
+
 // ************************************************************************* //
