@@ -84,6 +84,15 @@ class Case:
         self.run("foamDictionary", file, "-entry", entry, "-set", str(value),
                  log="foamDictionary")
 
+    def converge_linear_solvers(self):
+        """Tolerances of 1e-13 on p_rgh and 1e-14 on U, no relative one:
+        runs that should agree (serial and parallel) then differ by
+        round-off."""
+        for field in ["p_rgh", "p_rghFinal"]:
+            self.set("system/fvSolution", f"solvers/{field}/tolerance", 1e-13)
+            self.set("system/fvSolution", f"solvers/{field}/relTol", 0)
+        self.set("system/fvSolution", "solvers/U/tolerance", 1e-14)
+
     def history(self, start="0"):
         """Particle history: dict name -> array of rows
         (t, x, y, z, Ux, Uy, Uz, wx, wy, wz, Fx, Fy, Fz, Tx, Ty, Tz)."""

@@ -399,10 +399,7 @@ def test_contact_forces_are_the_same_on_one_and_two_processors(tmp_path, foam_en
     force (not twice it, a bug of some codes that sum forces over ranks)."""
     def make(name):
         case = landing_case(tmp_path, foam_env, name)
-        for field in ["p_rgh", "p_rghFinal"]:
-            case.set("system/fvSolution", f"solvers/{field}/tolerance", 1e-13)
-            case.set("system/fvSolution", f"solvers/{field}/relTol", 0)
-        case.set("system/fvSolution", "solvers/U/tolerance", 1e-14)
+        case.converge_linear_solvers()
         case.set("system/controlDict", "endTime", 0.1)
         return case
 

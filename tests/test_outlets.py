@@ -201,11 +201,7 @@ outlets { top { type plane; point (0 0 0.03); normal (0 0 1); } }
         ("system/controlDict", "writeInterval"): 1000,
     }.items():
         case.set(file, entry, value)
-    # Converged linear solvers: serial and parallel then differ by round-off
-    for field in ["p_rgh", "p_rghFinal"]:
-        case.set("system/fvSolution", f"solvers/{field}/tolerance", 1e-13)
-        case.set("system/fvSolution", f"solvers/{field}/relTol", 0)
-    case.set("system/fvSolution", "solvers/U/tolerance", 1e-14)
+    case.converge_linear_solvers()
     return case
 
 

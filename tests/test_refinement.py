@@ -201,11 +201,7 @@ def test_refined_run_restarts_exactly_and_runs_on_two_ranks_as_in_serial(
 
     def converged_case(name):
         case = heavy_case(tmp_path, foam_env, name)
-        # Converged linear solvers: the two runs then differ by round-off
-        for field in ["p_rgh", "p_rghFinal"]:
-            case.set("system/fvSolution", f"solvers/{field}/tolerance", 1e-13)
-            case.set("system/fvSolution", f"solvers/{field}/relTol", 0)
-        case.set("system/fvSolution", "solvers/U/tolerance", 1e-14)
+        case.converge_linear_solvers()
         return case
 
     converged = converged_case("converged")

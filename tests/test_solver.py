@@ -141,11 +141,7 @@ def test_parallel_matches_serial(tmp_path, foam_env, source):
             # METIS cuts the channel across its middle: start the disk there
             case.set("constant/particleProperties", "particles/disk/position",
                      "(0.1 0.2 0)")
-        # Converged linear solvers: the two runs then differ by round-off
-        for field in ["p_rgh", "p_rghFinal"]:
-            case.set("system/fvSolution", f"solvers/{field}/tolerance", 1e-13)
-            case.set("system/fvSolution", f"solvers/{field}/relTol", 0)
-        case.set("system/fvSolution", "solvers/U/tolerance", 1e-14)
+        case.converge_linear_solvers()
         return case
 
     serial = make("serial")

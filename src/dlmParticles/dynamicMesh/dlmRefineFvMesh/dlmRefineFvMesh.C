@@ -20,22 +20,27 @@ namespace Foam
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::dictionary Foam::dlmRefineFvMesh::refineCoeffs() const
+{
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            "dynamicMeshDict",
+            time().constant(),
+            *this,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    return dict.optionalSubDict(dynamicRefineFvMesh::typeName + "Coeffs");
+}
+
+
 void Foam::dlmRefineFvMesh::warnAtMaxCells()
 {
-    const label maxCells =
-        IOdictionary
-        (
-            IOobject
-            (
-                "dynamicMeshDict",
-                time().constant(),
-                *this,
-                IOobject::MUST_READ,
-                IOobject::NO_WRITE,
-                false
-            )
-        ).optionalSubDict(dynamicRefineFvMesh::typeName + "Coeffs")
-       .get<label>("maxCells");
+    const label maxCells = refineCoeffs().get<label>("maxCells");
 
     const label nCells = globalData().nTotalCells();
     if (nCells >= maxCells && !atMaxCells_)
@@ -140,21 +145,7 @@ bool Foam::dlmRefineFvMesh::update()
         return changed;
     }
 
-    const dictionary coeffs
-    (
-        IOdictionary
-        (
-            IOobject
-            (
-                "dynamicMeshDict",
-                time().constant(),
-                *this,
-                IOobject::MUST_READ,
-                IOobject::NO_WRITE,
-                false
-            )
-        ).optionalSubDict(dynamicRefineFvMesh::typeName + "Coeffs")
-    );
+    const dictionary coeffs(refineCoeffs());
 
     bool changed = false;
     const label maxCells = coeffs.get<label>("maxCells");
