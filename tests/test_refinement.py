@@ -301,3 +301,22 @@ def test_a_change_of_the_mesh_leaves_a_steady_drag_nearly_undisturbed(
     assert abs(drag[299] - drag[298]) < 1e-5
     assert drag[300] == pytest.approx(before, rel=0.015)
     assert drag[302] == pytest.approx(before, rel=3e-3)
+
+
+def test_refinement_runs_in_a_box_whose_walls_fix_the_pressure_flux(
+        tmp_path, foam_env):
+    """tests/cases/sphereBox, a sphere settling between walls whose p_rgh
+    is fixedFluxPressure, refined at the sphere's surface: after each
+    change only the coupled patches are evaluated (fixedFluxPressure may
+    only be evaluated by the pressure equation: evaluating every patch
+    stopped the run at the first change), and the sphere settles."""
+    case = Case.copy(HERE / "cases" / "sphereBox", tmp_path / "box", foam_env)
+    (case.path / "constant" / "dynamicMeshDict").write_text(REFINE_AT_SURFACES)
+    # The refined cells' viscous number, nu dt/h^2, within the case's limit
+    case.set("system/controlDict", "deltaT", 0.001)
+    case.set("system/controlDict", "endTime", 0.005)
+    case.run("blockMesh")
+    log = case.run("pimpleDLMFoam").log
+    # Before the first step and at the first one (the start's surplus)
+    assert log.count("Mesh changed:") == 2
+    assert case.history()["sphere"][-1, 6] < 0
