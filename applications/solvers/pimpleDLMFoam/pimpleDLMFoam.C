@@ -13,6 +13,10 @@ Description
     Antoun (2011, Computational Particle Mechanics).
 
     Each time step:
+    0. with constant/dynamicMeshDict (dlmRefineFvMesh), refinement at the
+       particles' places (a fresh start is refined before its first step);
+       the particles' fractions, the projection's cells and force, the
+       flux and the step limits follow each change (updateMesh.H);
     1. PIMPLE solution of the momentum and pressure equations on the whole
        mesh with the mixture density rho = rhoFluid + sum_p (rho_p -
        rhoFluid) alpha_p:
@@ -60,7 +64,7 @@ Description
 
     Inputs: constant/transportProperties (rho, nu of the fluid), constant/g,
     constant/particleProperties, system/fvOptions (rigidProjection), fields
-    U and p_rgh.
+    U and p_rgh; optional constant/dynamicMeshDict (refinement).
 
 \*---------------------------------------------------------------------------*/
 
