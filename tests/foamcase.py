@@ -37,6 +37,18 @@ def packed_bed_rows(case_path, name="bed"):
     return np.array(rows)
 
 
+def assert_same_trajectory(expected, actual, rel=1e-6):
+    """Two particle histories (rows of Case.history) agree: displacement,
+    velocity and angular velocity each to rel of its largest magnitude."""
+    assert expected.shape == actual.shape
+    s, p = expected, actual
+    displacement = s[:, 1:4] - s[0, 1:4] + s[0, 4:7]*s[0, 0]
+    for columns, scale in [(slice(1, 4), np.abs(displacement).max()),
+                           (slice(4, 7), np.abs(s[:, 4:7]).max()),
+                           (slice(7, 10), np.abs(s[:, 7:10]).max())]:
+        assert np.abs(p[:, columns] - s[:, columns]).max() < rel*scale
+
+
 class Case:
     """An OpenFOAM case directory with the project's environment."""
 

@@ -8,7 +8,7 @@ import shutil
 import numpy as np
 import pytest
 
-from foamcase import Case, packed_bed_rows, write_periodic_box
+from foamcase import assert_same_trajectory, Case, packed_bed_rows, write_periodic_box
 
 HERE = pathlib.Path(__file__).resolve().parent
 ARRAY = HERE.parent / "tutorials" / "periodicArray"
@@ -217,12 +217,7 @@ def test_refined_run_restarts_exactly_and_runs_on_two_ranks_as_in_serial(
         cell_counts((converged.path / "log.pimpleDLMFoam").read_text())
     s, p = converged.history()["sphere"], parallel.history()["sphere"]
     assert s.shape == p.shape
-    # Displacement, velocity and angular velocity each to 1e-6 relative
-    displacement = s[:, 1:4] - s[0, 1:4] + s[0, 4:7]*s[0, 0]
-    for columns, scale in [(slice(1, 4), np.abs(displacement).max()),
-                           (slice(4, 7), np.abs(s[:, 4:7]).max()),
-                           (slice(7, 10), np.abs(s[:, 7:10]).max())]:
-        assert np.abs(p[:, columns] - s[:, columns]).max() < 1e-6*scale
+    assert_same_trajectory(s, p)
 
 
 @pytest.mark.parametrize("tutorial, mesh_type, message", [
