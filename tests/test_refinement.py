@@ -37,8 +37,30 @@ dynamicRefineFvMeshCoeffs
 }
 """
 
+REFINE_TO_TARGETS = """\
+FoamFile {{ version 2.0; format ascii; class dictionary; object dynamicMeshDict; }}
+dynamicFvMesh   dlmRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{{
+    refineInterval  1;
+    nBufferLayers   1;
+    maxCells        1000000;
+    correctFluxes
+    (
+        (phi none) (phi_0 none) (phi_0_0 none) (ghf none) (UBlendingFactor none)
+    );
+    dumpLevel       true;
+    targets
+    {{
+{targets}
+    }}
+}}
+"""
 
-def translating_case(tmp_path, foam_env, name):
+SURFACE_BAND = "        surfaces { type particleSurface; level 2; }"
+
+
+def translating_case(tmp_path, foam_env, name, dynamic_mesh=REFINE_AT_SURFACES):
     """A periodic box of 8^3 cells (1 cm) holding a sphere of 2.5 mm radius
     prescribed to move at 1 cm/s along x through water moving with it, the
     mesh refined once around the sphere's surface at every step and
@@ -63,7 +85,7 @@ particles
     (case.path / "system" / "fvOptions").write_text(
         "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n"
         "rigidProjection { type rigidProjection; }\n")
-    (case.path / "constant" / "dynamicMeshDict").write_text(REFINE_AT_SURFACES)
+    (case.path / "constant" / "dynamicMeshDict").write_text(dynamic_mesh)
     transport = case.path / "constant" / "transportProperties"
     transport.write_text(transport.read_text().replace(
         "nu              1e-3;", "nu              1e-6;"))
@@ -80,16 +102,21 @@ particles
     return case
 
 
+@pytest.mark.parametrize("dynamic_mesh", [
+    REFINE_AT_SURFACES, REFINE_TO_TARGETS.format(targets=SURFACE_BAND)],
+    ids=["alpha", "targets"])
 def test_refinement_that_follows_a_translating_sphere_keeps_the_flow_and_the_solid_exact(
-        tmp_path, foam_env):
+        tmp_path, foam_env, dynamic_mesh):
     """Refined around the sphere's surface before the first step, and at
     every step there and unrefined behind it, the fluid moving with the
     sphere stays the uniform flow to
     round-off (the flux on new faces from the mapped face velocity, the
     projection's cells found again on the new cells), and the sphere's solid
     volume, sum alpha V, is its volume to 1e-12 at every written time (the
-    fractions computed on the new cells, not mapped)."""
-    case = translating_case(tmp_path, foam_env, "translating")
+    fractions computed on the new cells, not mapped). Refined one level in
+    the cells that alpha.solid's thresholds find, or two in the
+    particleSurface target's band."""
+    case = translating_case(tmp_path, foam_env, "translating", dynamic_mesh)
     case.run("blockMesh")
     case.run("pimpleDLMFoam")
     log = (case.path / "log.pimpleDLMFoam").read_text()
@@ -113,11 +140,11 @@ def test_refinement_that_follows_a_translating_sphere_keeps_the_flow_and_the_sol
         assert np.abs(U - [SPEED, 0, 0]).max() < 1e-12*SPEED
 
 
-def heavy_case(tmp_path, foam_env, name, end_time=0.1):
+def heavy_case(tmp_path, foam_env, name, end_time=0.1, dynamic_mesh=REFINE_AT_SURFACES):
     """The translating case with the sphere free and twice as heavy as the
     water, launched at 1 cm/s along x and 3 mm/s along y through water at
     rest."""
-    case = translating_case(tmp_path, foam_env, name)
+    case = translating_case(tmp_path, foam_env, name, dynamic_mesh)
     properties = case.path / "constant" / "particleProperties"
     properties.write_text(properties.read_text()
                           .replace("motion      prescribed;", "motion      free;")
@@ -132,8 +159,16 @@ def heavy_case(tmp_path, foam_env, name, end_time=0.1):
     return case
 
 
+SURFACE_AND_WAKE = REFINE_TO_TARGETS.format(targets=SURFACE_BAND + """
+        wake { type vorticity; level 1; threshold 0.2; }""")
+
+BY_FIELD_AND_BY_TARGETS = pytest.mark.parametrize(
+    "dynamic_mesh", [REFINE_AT_SURFACES, SURFACE_AND_WAKE], ids=["alpha", "targets"])
+
+
+@BY_FIELD_AND_BY_TARGETS
 def test_refinement_keeps_the_mixture_momentum_and_continuity_under_a_heavy_free_sphere(
-        tmp_path, foam_env):
+        tmp_path, foam_env, dynamic_mesh):
     """A free sphere twice as heavy as the water launched through it at
     rest in the periodic box, the mesh refined around it and unrefined behind
     it at every step: every change keeps the mixture's momentum to round-off
@@ -142,8 +177,9 @@ def test_refinement_keeps_the_mixture_momentum_and_continuity_under_a_heavy_free
     here), the flux on the new mesh is divergence-free to round-off, and the
     sphere's solid volume stays its volume. (With the sphere's fractions of
     a quadrature, good to 1e-7, the first refinement changed the momentum by
-    7e-8 of itself.)"""
-    case = heavy_case(tmp_path, foam_env, "heavy")
+    7e-8 of itself.) By alpha.solid's thresholds, or by the targets: the
+    surface's band two levels down and the wake one."""
+    case = heavy_case(tmp_path, foam_env, "heavy", dynamic_mesh=dynamic_mesh)
     case.run("pimpleDLMFoam")
 
     lines = (case.path / "log.pimpleDLMFoam").read_text().splitlines()
@@ -168,24 +204,26 @@ def test_refinement_keeps_the_mixture_momentum_and_continuity_under_a_heavy_free
     assert np.dot(alpha, cells) == pytest.approx(4/3*math.pi*RADIUS**3, rel=1e-12, abs=0)
 
 
-def test_refined_run_restarts_exactly_and_runs_on_two_ranks_as_in_serial(
-        tmp_path, foam_env):
+@BY_FIELD_AND_BY_TARGETS
+def test_refined_run_restarts_exactly_and_runs_on_two_and_three_ranks_as_in_serial(
+        tmp_path, foam_env, dynamic_mesh):
     """The heavy sphere's refined run, restarted from a written time (its
     refined mesh, cell levels and refinement history, and the face velocity
     read back), continues as if never stopped: the same trajectory to 1e-12
     (to the bit here) and the same cells. On 2 ranks (METIS) the mesh
     follows the sphere across the processor boundary with the same cells as
     in serial, and with converged linear solvers the trajectory matches to
-    1e-6. (OpenFOAM's dynamicRefineFvMesh selects cells from
+    1e-6; on 3 ranks (oversubscribed) too. (OpenFOAM's dynamicRefineFvMesh selects cells from
     point values of each processor's own cells: 2423 cells on 2 ranks
     against 2430 in serial at the first change, and trajectories 1e-5
     apart; and CorrectPhi's reference cell on every processor left the flux
     divergent.)"""
-    serial = heavy_case(tmp_path, foam_env, "serial")
+    serial = heavy_case(tmp_path, foam_env, "serial", dynamic_mesh=dynamic_mesh)
     serial.run("pimpleDLMFoam")
     track = serial.history()["sphere"]
 
-    restarted = heavy_case(tmp_path, foam_env, "restarted", end_time=0.05)
+    restarted = heavy_case(tmp_path, foam_env, "restarted", end_time=0.05,
+                           dynamic_mesh=dynamic_mesh)
     restarted.run("pimpleDLMFoam")
     restarted.set("system/controlDict", "endTime", 0.1)
     restarted.run("pimpleDLMFoam", log="pimpleDLMFoam.restart")
@@ -200,24 +238,27 @@ def test_refined_run_restarts_exactly_and_runs_on_two_ranks_as_in_serial(
                 if line.startswith("Mesh changed:")]
 
     def converged_case(name):
-        case = heavy_case(tmp_path, foam_env, name)
+        case = heavy_case(tmp_path, foam_env, name, dynamic_mesh=dynamic_mesh)
         case.converge_linear_solvers()
         return case
 
     converged = converged_case("converged")
     converged.run("pimpleDLMFoam")
-    parallel = converged_case("parallel")
-    shutil.copy(HERE / "cases" / "sphereBox" / "system" / "decomposeParDict",
-                parallel.path / "system")
-    parallel.run("decomposePar")
-    parallel.run("pimpleDLMFoam", np=2)
-    for processor in ["processor0", "processor1"]:
-        assert parallel.internal_field(f"{processor}/0.1/alpha.solid").max() > 0.5
-    assert cell_counts((parallel.path / "log.pimpleDLMFoam").read_text()) == \
-        cell_counts((converged.path / "log.pimpleDLMFoam").read_text())
-    s, p = converged.history()["sphere"], parallel.history()["sphere"]
-    assert s.shape == p.shape
-    assert_same_trajectory(s, p)
+    serial_cells = cell_counts((converged.path / "log.pimpleDLMFoam").read_text())
+    for ranks in [2, 3]:
+        parallel = converged_case(f"parallel{ranks}")
+        shutil.copy(HERE / "cases" / "sphereBox" / "system" / "decomposeParDict",
+                    parallel.path / "system")
+        parallel.set("system/decomposeParDict", "numberOfSubdomains", ranks)
+        parallel.run("decomposePar")
+        parallel.run("pimpleDLMFoam", np=ranks)
+        holding = [parallel.internal_field(f"processor{k}/0.1/alpha.solid").max() > 0.1
+                   for k in range(ranks)]
+        assert sum(holding) >= 2
+        assert cell_counts((parallel.path / "log.pimpleDLMFoam").read_text()) == serial_cells
+        s, p = converged.history()["sphere"], parallel.history()["sphere"]
+        assert s.shape == p.shape
+        assert_same_trajectory(s, p)
 
 
 @pytest.mark.parametrize("tutorial, mesh_type, message", [
@@ -315,3 +356,51 @@ def test_refinement_runs_in_a_box_whose_walls_fix_the_pressure_flux(
     # Before the first step and at the first one (the start's surplus)
     assert log.count("Mesh changed:") == 2
     assert case.history()["sphere"][-1, 6] < 0
+
+
+def sphere_distance(case, time, centre):
+    """Distance of every cell centre from the sphere's surface"""
+    case.run("postProcess", "-func", "writeCellCentres", "-time", time)
+    centres = case.internal_field(f"{time}/C")
+    return np.linalg.norm(centres - centre, axis=1) - RADIUS
+
+
+def test_surface_target_refines_a_band_at_the_finest_level_and_holds_it(
+        tmp_path, foam_env):
+    """particleSurface at level 2 about a fixed sphere (8 base cells per
+    box, 1.25 mm; the sphere 4 base cells across): before the first step
+    every cell from 1 level-2 cell (0.3125 mm) inside the surface to 3
+    outside is at level 2, the core is coarser, no cell is refined farther
+    than the band's reach and 2:1 grading call for, the
+    solid volume is the sphere's to 1e-12, and over 12 steps the mesh
+    does not change (the keep test is wider than the refine test)."""
+    case = translating_case(tmp_path, foam_env, "band")
+    properties = case.path / "constant" / "particleProperties"
+    properties.write_text(properties.read_text()
+                          .replace("motion      prescribed;", "motion      fixed;")
+                          .replace(f"velocity    ({SPEED!r} 0 0);", ""))
+    (case.path / "constant" / "dynamicMeshDict").write_text(
+        REFINE_TO_TARGETS.format(targets=SURFACE_BAND))
+    for entry, value in {"endTime": 0.12, "writeInterval": 0.12}.items():
+        case.set("system/controlDict", entry, value)
+    case.run("blockMesh")
+    log = case.run("pimpleDLMFoam").log
+    loop = log[log.index("Starting time loop"):]
+    assert loop.count("\nTime = ") == 12
+    assert "Mesh changed:" not in loop
+
+    level = case.internal_field("0.12/cellLevel")
+    distance = sphere_distance(case, "0.12", [0.0051, 0.0049, 0.0047])
+    fine = 0.01/8/4
+    band = (distance > -fine) & (distance < 3*fine)
+    assert (level[band] == 2).all()
+    # One level-2 cell inside: the sphere's core stays coarser
+    assert (level[distance < -4*fine] < 2).all()
+    # Refined beyond the band only for 2:1 grading: within two coarser cells
+    assert np.abs(distance[level == 2]).max() < 3*fine + 2*0.87*2*fine
+    assert np.abs(distance[level >= 1]).max() < 3*fine + 4*0.87*4*fine
+    assert (level[np.abs(distance) > 5*4*fine] == 0).all()
+
+    case.run("postProcess", "-func", "writeCellVolumes", "-time", "0.12")
+    volume = np.dot(case.internal_field("0.12/alpha.solid"), case.internal_field("0.12/V"))
+    assert volume == pytest.approx(4/3*math.pi*RADIUS**3, rel=1e-12, abs=0)

@@ -6,6 +6,10 @@
 
 #include "dlmRefineFvMesh.H"
 #include "syncTools.H"
+#include "dlmParticleCloud.H"
+#include "checkKeywords.H"
+#include "mapPolyMesh.H"
+#include "orderedProcessorCyclicPolyPatch.H"
 #include "volFields.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -52,6 +56,208 @@ void Foam::dlmRefineFvMesh::warnAtMaxCells()
             << " are unrefined" << endl;
     }
     atMaxCells_ = nCells >= maxCells;
+}
+
+
+void Foam::dlmRefineFvMesh::readTargets()
+{
+    const dictionary coeffs(refineCoeffs());
+    const dictionary* targetsDict = coeffs.findDict("targets");
+    if (!targetsDict)
+    {
+        return;
+    }
+
+    checkKeywords
+    (
+        coeffs,
+        wordHashSet
+        ({
+            "refineInterval", "maxCells", "nBufferLayers", "correctFluxes",
+            "dumpLevel", "targets"
+        }),
+        "for refinement by targets (dlmRefineFvMesh)"
+    );
+
+    for (const entry& e : *targetsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(*targetsDict)
+                << "Entry " << e.keyword() << " of targets is not a"
+                << " dictionary: each target is a dictionary with its type"
+                << " and level" << exit(FatalIOError);
+        }
+        targets_.append(refinementTarget::New(e.dict()));
+    }
+    if (targets_.empty())
+    {
+        FatalIOErrorInFunction(*targetsDict)
+            << "No refinement target in targets" << exit(FatalIOError);
+    }
+}
+
+
+Foam::labelList Foam::dlmRefineFvMesh::targetLevels
+(
+    const dlmParticleCloud& cloud,
+    const scalar lookAhead,
+    const bool keep
+) const
+{
+    labelList level(nCells(), Zero);
+    for (const refinementTarget& target : targets_)
+    {
+        target.mark(cloud, meshCutter().cellLevel(), lookAhead, keep, level);
+    }
+    return level;
+}
+
+
+bool Foam::dlmRefineFvMesh::updateToTargets(const dictionary& coeffs)
+{
+    const label refineInterval = coeffs.get<label>("refineInterval");
+    const label timeIndex = time().timeIndex();
+    if
+    (
+        refineInterval <= 0
+     || (timeIndex > 0 && timeIndex % refineInterval != 0)
+    )
+    {
+        topoChanging(false);
+        return false;
+    }
+
+    const dlmParticleCloud* cloudPtr =
+        findObject<dlmParticleCloud>("particles");
+    if (!cloudPtr)
+    {
+        FatalErrorInFunction
+            << time().constant()/"dynamicMeshDict" << ": refinement targets"
+            << " follow the particles, and this solver has none"
+            << exit(FatalError);
+    }
+    const dlmParticleCloud& cloud = *cloudPtr;
+
+    const label maxCells = coeffs.get<label>("maxCells");
+    const label nBufferLayers = coeffs.getOrDefault<label>("nBufferLayers", 1);
+    label maxLevel = 0;
+    for (const refinementTarget& target : targets_)
+    {
+        maxLevel = max(maxLevel, target.level());
+    }
+
+    const scalar lookAhead = refineInterval*time().deltaTValue();
+    labelList keepLevel(targetLevels(cloud, lookAhead, true));
+
+    bool changed = false;
+    bitSet refineCell(nCells());
+    {
+        const labelList level(targetLevels(cloud, lookAhead, false));
+        const labelList& cellLevel = meshCutter().cellLevel();
+        forAll(level, celli)
+        {
+            if (cellLevel[celli] < level[celli])
+            {
+                refineCell.set(celli);
+            }
+        }
+    }
+
+    if (globalData().nTotalCells() < maxCells)
+    {
+        const labelList cellsToRefine
+        (
+            selectRefineCells(maxCells, maxLevel, refineCell)
+        );
+        if (returnReduce(cellsToRefine.size(), sumOp<label>()) > 0)
+        {
+            const autoPtr<mapPolyMesh> map = refine(cellsToRefine);
+            const labelList& cellMap = map().cellMap();
+            const labelList& reverseCellMap = map().reverseCellMap();
+
+            // The refined cells (their children) are kept from unrefinement
+            // this update, and take their parent's level to keep
+            bitSet refined(cellMap.size());
+            labelList newKeepLevel(cellMap.size(), maxLevel);
+            forAll(cellMap, celli)
+            {
+                const label oldCelli = cellMap[celli];
+                if (oldCelli >= 0)
+                {
+                    newKeepLevel[celli] = keepLevel[oldCelli];
+                }
+                if
+                (
+                    oldCelli < 0
+                 || reverseCellMap[oldCelli] != celli
+                 || refineCell.test(oldCelli)
+                )
+                {
+                    refined.set(celli);
+                }
+            }
+            refineCell.transfer(refined);
+            keepLevel.transfer(newKeepLevel);
+            changed = true;
+        }
+    }
+
+    if (timeIndex > 0)
+    {
+        for (label layer = 0; layer < nBufferLayers; ++layer)
+        {
+            extendMarkedCells(refineCell);
+        }
+
+        // A split point may go where each of its cells is finer than the
+        // level it keeps (0: may go, 1: stays)
+        const labelList& cellLevel = meshCutter().cellLevel();
+        const labelListList& pointCells = this->pointCells();
+        scalarField staysRefined(nPoints(), Zero);
+        forAll(pointCells, pointi)
+        {
+            for (const label celli : pointCells[pointi])
+            {
+                if (cellLevel[celli] <= keepLevel[celli])
+                {
+                    staysRefined[pointi] = 1;
+                    break;
+                }
+            }
+        }
+        syncTools::syncPointList
+        (
+            *this,
+            staysRefined,
+            maxEqOp<scalar>(),
+            scalar(0)
+        );
+
+        const labelList pointsToUnrefine
+        (
+            selectUnrefinePoints(0.5, refineCell, staysRefined)
+        );
+        if (returnReduce(pointsToUnrefine.size(), sumOp<label>()) > 0)
+        {
+            unrefine(pointsToUnrefine);
+            changed = true;
+        }
+
+        if ((nRefinementIterations_ % 10) == 0)
+        {
+            // Unrefinement leaves holes in the refinement history
+            const_cast<refinementHistory&>(meshCutter().history()).compact();
+        }
+        ++nRefinementIterations_;
+    }
+
+    topoChanging(changed);
+    if (changed)
+    {
+        moving(false);
+    }
+    return changed;
 }
 
 
@@ -131,21 +337,31 @@ Foam::dlmRefineFvMesh::dlmRefineFvMesh(const IOobject& io)
 :
     dynamicRefineFvMesh(io),
     atMaxCells_(false)
-{}
+{
+    orderedProcessorCyclicPolyPatch::replacePatches(*this);
+    readTargets();
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 bool Foam::dlmRefineFvMesh::update()
 {
+    const dictionary coeffs(refineCoeffs());
+
+    if (targets_.size())
+    {
+        const bool changed = updateToTargets(coeffs);
+        warnAtMaxCells();
+        return changed;
+    }
+
     if (time().timeIndex() > 0)
     {
         const bool changed = dynamicRefineFvMesh::update();
         warnAtMaxCells();
         return changed;
     }
-
-    const dictionary coeffs(refineCoeffs());
 
     bool changed = false;
     const label maxCells = coeffs.get<label>("maxCells");

@@ -1,0 +1,109 @@
+/*---------------------------------------------------------------------------*\
+  pimpleDLMFoam: particle-resolved simulation of fluid-particle flows with the
+  distributed Lagrange multiplier method, built on OpenFOAM.
+  License: GNU General Public License v3 or later.
+\*---------------------------------------------------------------------------*/
+
+#include "particleSurface.H"
+#include "dlmParticleCloud.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace refinementTargets
+{
+    defineTypeNameAndDebug(particleSurface, 0);
+    addToRunTimeSelectionTable(refinementTarget, particleSurface, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::refinementTargets::particleSurface::particleSurface
+(
+    const dictionary& dict
+)
+:
+    refinementTarget(dict),
+    cellsOutside_(dict.getCheckOrDefault<scalar>("cells", 3, scalarMinMax::ge(0))),
+    cellsInside_
+    (
+        dict.getCheckOrDefault<scalar>("cellsInside", 1, scalarMinMax::ge(0))
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::refinementTargets::particleSurface::keywords() const
+{
+    wordList known(refinementTarget::keywords());
+    known.append(wordList({"cells", "cellsInside"}));
+    return known;
+}
+
+
+void Foam::refinementTargets::particleSurface::mark
+(
+    const dlmParticleCloud& cloud,
+    const labelList& cellLevel,
+    const scalar lookAhead,
+    const bool keep,
+    labelList& targetLevel
+) const
+{
+    const vectorField& C = cloud.mesh().C();
+    const List<boundBox>& boxes = cloud.cellBoxes();
+
+    // The search box's margin: the widest band and test of any local cell
+    const scalar baseSize = largestBaseCellSize(cloud, cellLevel);
+    const scalar widestBand =
+        max(cellsOutside_, cellsInside_)*targetCellSize(baseSize, 0)
+      + reach(boundBox(Zero, baseSize*vector::one), keep);
+
+    DynamicList<label> nearCells;
+    for (const dlmParticle& p : cloud.particles())
+    {
+        const scalar motion = p.surfaceSpeed()*lookAhead;
+        const scalar margin =
+            p.shape().boundingRadius() + widestBand + motion;
+        nearCells.clear();
+        cloud.findCells
+        (
+            boundBox(p.position() - margin*vector::one, p.position() + margin*vector::one),
+            nearCells
+        );
+
+        const tensor toBody(p.R().T());
+        for (const label celli : nearCells)
+        {
+            if (targetLevel[celli] >= level())
+            {
+                continue;
+            }
+            const scalar h =
+                targetCellSize(cmptMax(boxes[celli].span()), cellLevel[celli]);
+            const scalar cellReach = reach(boxes[celli], keep);
+            vector normal;
+            const scalar d = p.shape().signedDistance
+            (
+                toBody & (C[celli] - p.position()),
+                normal
+            );
+            if
+            (
+                d - cellReach <= cellsOutside_*h + motion
+             && d + cellReach >= -(cellsInside_*h + motion)
+            )
+            {
+                targetLevel[celli] = level();
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //
