@@ -404,3 +404,91 @@ def test_surface_target_refines_a_band_at_the_finest_level_and_holds_it(
     case.run("postProcess", "-func", "writeCellVolumes", "-time", "0.12")
     volume = np.dot(case.internal_field("0.12/alpha.solid"), case.internal_field("0.12/V"))
     assert volume == pytest.approx(4/3*math.pi*RADIUS**3, rel=1e-12, abs=0)
+
+
+def test_gap_target_refines_between_close_spheres_and_between_a_sphere_and_a_wall(
+        tmp_path, foam_env):
+    """particleGap at level 1 (gaps up to 4 level-1 cells, 3.3 mm) in the
+    walled box of 1.67 mm cells: two fixed spheres 0.5 mm apart, and a third
+    0.6 mm from the wall x = 0. Every cell within a level-1 cell of both
+    near surfaces, or of the third sphere and the wall, is refined; cells at
+    the far sides of the spheres, away from any other surface, are not."""
+    case = Case.copy(HERE / "cases" / "sphereBox", tmp_path / "gaps", foam_env)
+    radius = 0.005
+    centres = {"a": (0.0151, 0.0149, 0.0120), "b": (0.0151, 0.0149, 0.0225),
+               "c": (0.0056, 0.0149, 0.0360)}
+    spheres = "\n".join(
+        f"    {name} {{ shape sphere; radius {radius}; density 2000; motion fixed;"
+        f" position ({x} {y} {z}); }}" for name, (x, y, z) in centres.items())
+    (case.path / "constant" / "particleProperties").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }\n"
+        f"particles\n{{\n{spheres}\n}}\n")
+    (case.path / "constant" / "dynamicMeshDict").write_text(REFINE_TO_TARGETS.format(
+        targets="        gaps { type particleGap; level 1; }"))
+    case.set("system/controlDict", "deltaT", 0.001)
+    case.set("system/controlDict", "endTime", 0.001)
+    case.set("system/controlDict", "writeInterval", 1)
+    case.run("blockMesh")
+    case.run("pimpleDLMFoam")
+    case.run("postProcess", "-func", "writeCellCentres", "-time", "0.001")
+    centre = case.internal_field("0.001/C")
+    level = case.internal_field("0.001/cellLevel")
+    distance = {name: np.linalg.norm(centre - c, axis=1) - radius
+                for name, c in centres.items()}
+    fine = 0.03/18/2
+    between = (distance["a"] < fine) & (distance["b"] < fine)
+    to_wall = (distance["c"] < fine) & (centre[:, 0] < fine)
+    assert between.sum() >= 4 and to_wall.sum() >= 2
+    assert (level[between] == 1).all()
+    assert (level[to_wall] == 1).all()
+    far_side = (np.abs(distance["a"]) < fine) & (centre[:, 2] < 0.0120 - 0.003)
+    assert far_side.sum() >= 4
+    assert (level[far_side] == 0).all()
+
+
+def test_wake_target_refines_behind_a_moving_sphere_and_not_in_uniform_flow(
+        tmp_path, foam_env):
+    """vorticity at level 1 alone: the sphere translating with the water
+    (uniform flow, no vorticity) leaves the mesh as it is; the heavy sphere
+    launched through still water refines cells beyond its surface's reach,
+    more of them behind it than ahead."""
+    wake_only = REFINE_TO_TARGETS.format(
+        targets="        wake { type vorticity; level 1; threshold 0.2; }")
+    uniform = translating_case(tmp_path, foam_env, "uniform", wake_only)
+    uniform.set("system/controlDict", "endTime", 0.05)
+    uniform.run("blockMesh")
+    assert "Mesh changed:" not in uniform.run("pimpleDLMFoam").log
+
+    heavy = heavy_case(tmp_path, foam_env, "heavy", end_time=0.05, dynamic_mesh=wake_only)
+    assert "Mesh changed:" in heavy.run("pimpleDLMFoam").log
+    heavy.run("postProcess", "-func", "writeCellCentres", "-time", "0.05")
+    level = heavy.internal_field("0.05/cellLevel")
+    centre = heavy.internal_field("0.05/C")
+    sphere = heavy.history()["sphere"][-1]
+    offset = centre - sphere[1:4]
+    distance = np.linalg.norm(offset, axis=1) - RADIUS
+    refined = level == 1
+    assert (distance[refined] > 2*0.01/8).any()
+    along = offset[refined] @ sphere[4:7]
+    assert (along < 0).sum() > (along > 0).sum()
+
+
+@pytest.mark.parametrize("targets, message", [
+    ("surfaces { type particleSurfaces; level 2; }",
+     "Unknown type type particleSurfaces"),
+    ("surfaces { type particleSurface; level 2; cell 3; }",
+     "Unknown keyword 'cell' for refinement target surfaces (type particleSurface)"),
+    ("surfaces { type particleSurface; level 0; }", "level 0 of refinement target surfaces"),
+    ("surfaces { type particleSurface; level 2; cells -1; }", "cells"),
+    ("", "No refinement target in targets"),
+])
+def test_a_wrong_refinement_target_is_an_input_error(tmp_path, foam_env, targets, message):
+    """A misspelt target type or keyword, a level below 1, a negative width
+    or an empty targets dictionary stops the run naming constant/dynamicMeshDict."""
+    case = translating_case(tmp_path, foam_env, "wrong",
+                            REFINE_TO_TARGETS.format(targets="        " + targets))
+    case.run("blockMesh")
+    result = case.run("pimpleDLMFoam", check=False)
+    assert result.returncode != 0
+    assert "constant/dynamicMeshDict" in result.log
+    assert message in result.log
