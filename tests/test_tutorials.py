@@ -13,7 +13,7 @@ import subprocess
 import numpy as np
 import pytest
 
-from foamcase import ROOT
+from foamcase import Case, ROOT
 
 TUTORIALS = sorted(p.parent for p in (ROOT / "tutorials").glob("*/Allrun"))
 SCRIPTS = sorted(p for t in TUTORIALS for p in t.glob("Allrun*"))
@@ -56,7 +56,11 @@ def test_tutorial_scripts_find_the_project_and_edit_no_tracked_file():
         assert "dlmRefuseEarlierResults" in text, name
         for dictionary in re.findall(r"dlmSetEntries (\S+)", text):
             path = script.parent / dictionary
-            assert f'#includeIfPresent "{path.name}.Allrun"' in path.read_text(), \
+            # A dictionary the Allrun makes (switching an option on) is a
+            # copy of a tracked one
+            copied = re.search(rf"cp (\S+) {re.escape(dictionary)}\n", text)
+            source = script.parent / copied.group(1) if copied else path
+            assert f'#includeIfPresent "{path.name}.Allrun"' in source.read_text(), \
                 f"{name}: {dictionary} does not include {path.name}.Allrun"
     for tutorial in TUTORIALS:
         assert "constant/*.Allrun system/*.Allrun" in (tutorial / "Allclean").read_text()
@@ -119,6 +123,32 @@ def test_a_tutorial_copied_anywhere_runs_with_the_environment(tmp_path, foam_env
     result = check_run_then_refused_then_cleaned(case, (18, 4, 2), foam_env)
     assert "Lambda = " in result.stdout
     assert "nu = 0.000212207" in result.stdout
+
+
+def test_ten_cate_refined_on_two_ranks_runs_reconstructs_and_cleans(tmp_path, foam_env):
+    """tutorials/tenCate E4 at 4 cells per diameter refined once (Allrun's
+    5th argument) on 2 ranks for 0.05 s: the mesh follows the sphere,
+    reconstructParMesh and reconstructPar give each written time its
+    refined mesh with cellLevel (for paraFoam), the tracked files stay, and
+    Allclean removes the dynamicMeshDict it switched on."""
+    case = tmp_path / "tenCate"
+    shutil.copytree(ROOT / "tutorials" / "tenCate", case,
+                    ignore=shutil.ignore_patterns(*IGNORED))
+    before = snapshot(case)
+    result = run(case / "Allrun", "E4", 4, 2, 0.05, 1, env=foam_env)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "refined at the sphere's surface to 8 cells per diameter" in result.stdout
+    changes = re.findall(r"^Mesh changed: (\d+) cells",
+                         (case / "log.pimpleDLMFoam").read_text(), re.M)
+    last = Case(case, foam_env).times()[-1]
+    assert float(last) > 0.04
+    level = Case(case, foam_env).internal_field(f"{last}/cellLevel")
+    assert level.size == int(changes[-1]) > 21*21*43
+    assert level.max() == 1
+    after = snapshot(case)
+    assert not [f for f, digest in before.items() if after.get(f) != digest]
+    assert run(case / "Allclean", env=foam_env).returncode == 0
+    assert snapshot(case) == before
 
 
 def test_a_tutorial_outside_any_project_without_the_environment_says_what_to_source(
