@@ -3,6 +3,7 @@ flow, the particles' fractions and the rigid projection carried through
 every change of the mesh."""
 import math
 import pathlib
+import re
 import shutil
 
 import numpy as np
@@ -492,3 +493,42 @@ def test_a_wrong_refinement_target_is_an_input_error(tmp_path, foam_env, targets
     assert result.returncode != 0
     assert "constant/dynamicMeshDict" in result.log
     assert message in result.log
+
+
+def test_a_refined_serial_run_decomposes_continues_on_two_ranks_and_reconstructs(
+        tmp_path, foam_env):
+    """The heavy sphere under the particles' targets, run serially to
+    0.05 s, decomposed there (decomposePar -latestTime: cell levels and
+    refinement history too) and continued on 2 ranks to 0.1 s, follows the
+    serial run's cells and trajectory (to 1e-6 with converged solvers);
+    reconstructParMesh then reconstructPar give the last time its refined
+    mesh and fields, the sphere's solid volume to 1e-12."""
+    def converged_case(name, end_time):
+        case = heavy_case(tmp_path, foam_env, name, end_time=end_time,
+                          dynamic_mesh=SURFACE_AND_WAKE)
+        case.converge_linear_solvers()
+        return case
+
+    def cell_counts(log):
+        return [int(n) for n in re.findall(r"^Mesh changed: (\d+) cells", log, re.M)]
+
+    serial = converged_case("serial", 0.1)
+    serial_log = serial.run("pimpleDLMFoam").log
+    split = converged_case("split", 0.05)
+    first_log = split.run("pimpleDLMFoam").log
+    shutil.copy(HERE / "cases" / "sphereBox" / "system" / "decomposeParDict",
+                split.path / "system")
+    split.set("system/controlDict", "endTime", 0.1)
+    split.run("decomposePar", "-latestTime")
+    second_log = split.run("pimpleDLMFoam", np=2).log
+    assert cell_counts(first_log) + cell_counts(second_log) == cell_counts(serial_log)
+    track = serial.history()["sphere"]
+    assert_same_trajectory(track[track[:, 0] > 0.05 + 1e-9], split.history("0.05")["sphere"])
+
+    split.run("reconstructParMesh", "-mergeTol", "1e-6", "-latestTime")
+    split.run("reconstructPar", "-latestTime")
+    split.run("postProcess", "-func", "writeCellVolumes", "-latestTime")
+    alpha = split.internal_field("0.1/alpha.solid")
+    assert alpha.size == serial.internal_field("0.1/alpha.solid").size
+    volume = np.dot(alpha, split.internal_field("0.1/V"))
+    assert volume == pytest.approx(4/3*math.pi*RADIUS**3, rel=1e-12, abs=0)

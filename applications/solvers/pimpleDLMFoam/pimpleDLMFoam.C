@@ -108,6 +108,11 @@ int main(int argc, char *argv[])
     scalar aspectRatio = cellAspectRatioMax(mesh);
 
     #include "createFaceVelocity.H"
+    // Time spent changing the mesh, and following the change (fields,
+    // particles, projection and flux), reported at the end
+    label nMeshChanges = 0;
+    scalar meshChangeCpu = 0;
+    scalar meshFollowCpu = 0;
     #include "refineAtStart.H"
     #include "initialParticleVelocity.H"
     #include "CourantNo.H"
@@ -199,6 +204,14 @@ int main(int argc, char *argv[])
     }
 
     particles.printWorkTime(runTime.elapsedCpuTime());
+    if (mesh.dynamic())
+    {
+        Info<< "Mesh changes: " << nMeshChanges << ", refining "
+            << meshChangeCpu << " s and following the change "
+            << meshFollowCpu << " s, "
+            << 100*(meshChangeCpu + meshFollowCpu)/runTime.elapsedCpuTime()
+            << " % of the execution time" << endl;
+    }
 
     Info<< "End\n" << endl;
 
