@@ -8,13 +8,18 @@ run), and the wall time. Writes results/tenCate.csv, results/tenCate_<E>.png
 (velocity and gap against time) and results/tenCate_speed_error.png.
 
     validation/validate_tenCate.py [--cases E1,E2] [--np 2] [--step-factor F]
-                                   [--end-time T] [--plot-only] [N ...]
-                                   (default all cases, N = 6 8 12)
+                                   [--end-time T] [--levels L] [--plot-only]
+                                   [N ...]   (default all cases, N = 6 8 12)
 
 --step-factor scales the tutorial's step limits (maxCo, maxDeltaT): 0.5 runs
 at half the default step, to measure how far u_max depends on the step.
 --end-time ends the runs earlier than the tutorial's end (after the landing):
 E1 reaches u_max at about 2 s of its 4.1, so 2.3 halves its cost.
+--levels refines the mesh at the sphere (the tutorial's Allrun, 5th
+argument): N is then the base mesh's cells per diameter, the sphere's
+surface has N 2^L, its wake N 2^(L-1); those runs go to
+results/tenCate_refined.csv (with the last mesh's cell count) and appear
+beside the uniform ones in the plots, their labels "N+L".
 The plots show every run of the case (and step factor) found under
 validation/runs, so that resolutions run one at a time end in one plot;
 --plot-only redraws them without running.
@@ -64,19 +69,36 @@ def scale_step(case, factor):
 
 def stored_histories(case_name, tag, env):
     """Sphere histories of the runs of a case under RUNS at one step factor
-    (tag), by resolution: label -> history."""
+    (tag), uniform and refined, by resolution: label -> history."""
     found = []
     for path in RUNS.glob(f"tenCate_{case_name}_*"):
-        match = re.fullmatch(rf"tenCate_{case_name}_(\d+){re.escape(tag)}", path.name)
+        match = re.fullmatch(rf"tenCate_{case_name}_(\d+)(?:_ref(\d+))?{re.escape(tag)}",
+                             path.name)
         data = path / "postProcessing" / "particles" / "0" / "particles.dat"
         if match and data.exists():
-            found.append((int(match.group(1)), Case(path, env).history()["sphere"]))
+            n, levels = int(match.group(1)), int(match.group(2) or 0)
+            found.append((n << levels, levels, Case(path, env).history()["sphere"]))
     label_tag = tag.replace("_", ", ")
-    return {f"{n} cells/d{label_tag}": h for n, h in sorted(found, key=lambda f: f[0])}
+
+    def label(finest, levels):
+        if levels:
+            return f"{finest >> levels}, refined to {finest} cells/d{label_tag}"
+        return f"{finest} cells/d{label_tag}"
+    return {label(n, levels): h for n, levels, h in sorted(found, key=lambda f: f[:2])}
+
+
+def last_cell_count(case):
+    """Cells of the last mesh of a refined run (its log's last change)."""
+    changes = re.findall(r"^Mesh changed: (\d+) cells",
+                         (case.path / "log.pimpleDLMFoam").read_text(), re.M)
+    return int(changes[-1])
 
 
 HEADER = ["case", "cellsPerDiameter", "stepFactor", "u_max", "u_max_exp",
           "relError", "rmsVelocityDeviation", "wallTime_s", "steps", "endTime_s"]
+REFINED_HEADER = ["case", "baseCellsPerDiameter", "levels", "surfaceCellsPerDiameter",
+                  "u_max", "u_max_exp", "relError", "rmsVelocityDeviation",
+                  "wallTime_s", "steps", "endTime_s", "lastCells"]
 
 
 def main():
@@ -85,6 +107,7 @@ def main():
     parser.add_argument("--np", type=int, default=2)
     parser.add_argument("--step-factor", type=float, default=1.0)
     parser.add_argument("--end-time", type=float)
+    parser.add_argument("--levels", type=int, default=0)
     parser.add_argument("--plot-only", action="store_true")
     parser.add_argument("resolutions", nargs="*", type=int, default=[6, 8, 12])
     args = parser.parse_args()
@@ -92,31 +115,45 @@ def main():
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
     table = RESULTS / "tenCate.csv"
+    refined_table = RESULTS / "tenCate_refined.csv"
 
-    def stored_rows():
+    def stored_rows(path=table, header=HEADER):
         """Rows of the table as written now: runs of other cases or
         resolutions (possibly by another instance of this script) stay."""
-        if not table.exists():
+        if not path.exists():
             return []
-        lines = table.read_text().splitlines()
-        if lines[0].split(",") != HEADER:
-            raise SystemExit(f"{table}: header is not {','.join(HEADER)}")
+        lines = path.read_text().splitlines()
+        if lines[0].split(",") != header:
+            raise SystemExit(f"{path}: header is not {','.join(header)}")
         return [line.split(",") for line in lines[1:]]
 
     rows = stored_rows()
     for case_name in args.cases.split(","):
         factor = args.step_factor
         tag = "" if factor == 1 else f"_step{factor:g}"
+        refined = f"_ref{args.levels}" if args.levels else ""
         for n in [] if args.plot_only else args.resolutions:
             case = Case.copy(ROOT / "tutorials" / "tenCate",
-                             RUNS / f"tenCate_{case_name}_{n}{tag}", env)
+                             RUNS / f"tenCate_{case_name}_{n}{refined}{tag}", env)
             if factor != 1:
                 scale_step(case, factor)
-            end = [] if args.end_time is None else [args.end_time]
-            seconds = timed_run(case, "./Allrun", case_name, n, args.np, *end)
+            end = "" if args.end_time is None else args.end_time
+            seconds = timed_run(case, "./Allrun", case_name, n, args.np, end, args.levels)
             h = case.history()["sphere"]
             u_max, error = tenCate.summary(case_name, h)
             rms = rms_velocity_deviation(case_name, h)
+            if args.levels:
+                refined_rows = [r for r in stored_rows(refined_table, REFINED_HEADER)
+                                if not (r[0] == case_name and int(r[1]) == n
+                                        and int(r[2]) == args.levels)]
+                refined_rows.append([case_name, n, args.levels, n << args.levels, u_max,
+                                     tenCate.CASES[case_name][2], error, rms, seconds,
+                                     len(h), h[-1, 0], last_cell_count(case)])
+                print(f"{case_name} N={n}+{args.levels} u_max={u_max:.5f} "
+                      f"error={100*error:+.2f}% rms={100*rms:.2f}% wall={seconds:.0f}s "
+                      f"steps={len(h)} cells={last_cell_count(case)}", flush=True)
+                write_table(refined_table, REFINED_HEADER, refined_rows)
+                continue
             rows = [r for r in stored_rows()
                     if not (r[0] == case_name and int(r[1]) == n
                             and float(r[2]) == factor)]
@@ -148,9 +185,15 @@ def main():
         if float(r[2]) == 1:
             series.setdefault(r[0], []).append((float(r[7]), abs(float(r[5])), r[1]))
     plot_speed_error(ax, series, target=2, colors=colors)
+    refined_series = {}
+    for r in stored_rows(refined_table, REFINED_HEADER):
+        refined_series.setdefault(f"{r[0]} refined", []).append(
+            (float(r[8]), abs(float(r[6])), f"{r[1]}+{r[2]}"))
+    plot_speed_error(ax, refined_series, fmt="s--",
+                     colors={f"{c} refined": colors[c] for c in colors})
     ax.set_ylabel("|u_max error| [%]")
-    ax.set_title("ten Cate: speed against error (labels: cells/d; dotted:\n"
-                 "the coupling before issue 28, 2 ranks, shared cores)", fontsize=9)
+    ax.set_title("ten Cate: speed against error (labels: cells/d, refined: base+levels;\n"
+                 "dotted: the coupling before issue 28; 2 ranks)", fontsize=9)
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
     fig.savefig(RESULTS / "tenCate_speed_error.png", dpi=120)

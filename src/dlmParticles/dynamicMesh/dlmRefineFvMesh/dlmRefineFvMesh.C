@@ -116,11 +116,15 @@ Foam::labelList Foam::dlmRefineFvMesh::targetLevels
 
 bool Foam::dlmRefineFvMesh::updateToTargets(const dictionary& coeffs)
 {
-    const label refineInterval = coeffs.get<label>("refineInterval");
+    const label refineInterval = coeffs.getCheck<label>
+    (
+        "refineInterval",
+        labelMinMax::ge(0)
+    );
     const label timeIndex = time().timeIndex();
     if
     (
-        refineInterval <= 0
+        refineInterval == 0
      || (timeIndex > 0 && timeIndex % refineInterval != 0)
     )
     {
@@ -139,8 +143,13 @@ bool Foam::dlmRefineFvMesh::updateToTargets(const dictionary& coeffs)
     }
     const dlmParticleCloud& cloud = *cloudPtr;
 
-    const label maxCells = coeffs.get<label>("maxCells");
-    const label nBufferLayers = coeffs.getOrDefault<label>("nBufferLayers", 1);
+    const label maxCells = coeffs.getCheck<label>("maxCells", labelMinMax::ge(1));
+    const label nBufferLayers = coeffs.getCheckOrDefault<label>
+    (
+        "nBufferLayers",
+        1,
+        labelMinMax::ge(0)
+    );
     label maxLevel = 0;
     for (const refinementTarget& target : targets_)
     {
