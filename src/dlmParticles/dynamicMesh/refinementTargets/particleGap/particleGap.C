@@ -23,19 +23,6 @@ namespace refinementTargets
 }
 
 
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::scalar Foam::refinementTargets::particleGap::surfaceDistance
-(
-    const dlmParticle& p,
-    const point& x
-)
-{
-    vector normal;
-    return p.shape().signedDistance(p.R().T() & (x - p.position()), normal);
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::refinementTargets::particleGap::particleGap(const dictionary& dict)
@@ -175,12 +162,7 @@ void Foam::refinementTargets::particleGap::mark
         {
             continue;
         }
-        nearCells.clear();
-        cloud.findCells
-        (
-            boundBox(p.position() - margin*vector::one, p.position() + margin*vector::one),
-            nearCells
-        );
+        findCellsNear(cloud, p.position(), margin, nearCells);
         for (const label celli : nearCells)
         {
             if (targetLevel[celli] >= level() || !inGap(celli, p, motion))

@@ -70,14 +70,7 @@ void Foam::refinementTargets::particleSurface::mark
         const scalar motion = p.surfaceSpeed()*lookAhead;
         const scalar margin =
             p.shape().boundingRadius() + widestBand + motion;
-        nearCells.clear();
-        cloud.findCells
-        (
-            boundBox(p.position() - margin*vector::one, p.position() + margin*vector::one),
-            nearCells
-        );
-
-        const tensor toBody(p.R().T());
+        findCellsNear(cloud, p.position(), margin, nearCells);
         for (const label celli : nearCells)
         {
             if (targetLevel[celli] >= level())
@@ -87,12 +80,7 @@ void Foam::refinementTargets::particleSurface::mark
             const scalar h =
                 targetCellSize(cmptMax(boxes[celli].span()), cellLevel[celli]);
             const scalar cellReach = reach(boxes[celli], keep);
-            vector normal;
-            const scalar d = p.shape().signedDistance
-            (
-                toBody & (C[celli] - p.position()),
-                normal
-            );
+            const scalar d = surfaceDistance(p, C[celli]);
             if
             (
                 d - cellReach <= cellsOutside_*h + motion

@@ -48,6 +48,34 @@ Foam::scalar Foam::refinementTarget::largestBaseCellSize
 }
 
 
+Foam::scalar Foam::refinementTarget::surfaceDistance
+(
+    const dlmParticle& p,
+    const point& x
+)
+{
+    vector normal;
+    return p.shape().signedDistance(p.R().T() & (x - p.position()), normal);
+}
+
+
+void Foam::refinementTarget::findCellsNear
+(
+    const dlmParticleCloud& cloud,
+    const point& x,
+    const scalar margin,
+    DynamicList<label>& found
+)
+{
+    found.clear();
+    cloud.findCells
+    (
+        boundBox(x - margin*vector::one, x + margin*vector::one),
+        found
+    );
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::refinementTarget::refinementTarget(const dictionary& dict)
