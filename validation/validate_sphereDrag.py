@@ -10,11 +10,21 @@ blockage), Re = U D/nu. C_D = F/(rho U^2 pi D^2/8) from the particle
 history, averaged over the last fifth of 30 D/U; its drift over that
 window is reported. Writes results/sphereDrag.csv.
 
-    validation/validate_sphereDrag.py [--re 20,100] [N ...]   (default N = 8 12)
+--levels L refines the mesh at the sphere (issue 32): N is then the base
+mesh's cells per diameter, the sphere's surface band (particleSurface,
+3 fine cells out, 1 in) gets N 2^L, the near wake (vorticity above 0.2
+U/R) N 2^(L-1) and the far wake (above 0.05 U/R) N 2^(L-2); --box W,L
+sets the box's width and length in diameters (the sphere 4 D behind the
+inlet), to show how far the lateral array's confinement moves C_D. Those
+runs go to results/sphereDrag_refined.csv.
+
+    validation/validate_sphereDrag.py [--re 20,100] [--levels L] [--box 6,12] [N ...]
+                                      (default N = 8 12)
 """
 
 import argparse
 import math
+import re
 
 import numpy as np
 
@@ -23,23 +33,51 @@ from common import Case, RESULTS, ROOT, RUNS, foam_environment, merge_row, timed
 TABLE = RESULTS / "sphereDrag.csv"
 HEADER = ["Re", "cellsPerDiameter", "CD", "CD_SchillerNaumann", "relError", "drift",
           "wallTime_s", "steps"]
+REFINED_TABLE = RESULTS / "sphereDrag_refined.csv"
+REFINED_HEADER = ["Re", "baseCellsPerDiameter", "levels", "surfaceCellsPerDiameter",
+                  "widthD", "lengthD", "CD", "CD_SchillerNaumann", "relError", "drift",
+                  "wallTime_s", "steps", "lastCells"]
 D, U = 0.004, 0.5
 LENGTH, WIDTH, CENTRE = 12, 6, 4       # in diameters
+
+REFINEMENT = """\
+FoamFile {{ version 2.0; format ascii; class dictionary; object dynamicMeshDict; }}
+dynamicFvMesh   dlmRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{{
+    refineInterval  3;
+    nBufferLayers   1;
+    maxCells        4000000;
+    correctFluxes
+    (
+        (phi none) (phi_0 none) (phi_0_0 none) (ghf none) (UBlendingFactor none)
+    );
+    dumpLevel       true;
+    targets
+    {{
+        surface  {{ type particleSurface; level {levels}; }}
+        nearWake {{ type vorticity; level {near}; threshold 0.2; }}
+        farWake  {{ type vorticity; level {far}; threshold 0.05; }}
+    }}
+}}
+"""
 
 
 def schiller_naumann(re_number):
     return 24/re_number*(1 + 0.15*re_number**0.687)
 
 
-def make_case(re_number, n, env):
-    case = Case.copy(ROOT / "tutorials" / "cubicBed",
-                     RUNS / f"sphereDrag_Re{re_number:g}_N{n}", env)
-    L, W = LENGTH*D, WIDTH*D
+def make_case(re_number, n, env, levels=0, width=WIDTH, length=LENGTH):
+    name = f"sphereDrag_Re{re_number:g}_N{n}"
+    if levels:
+        name += f"_ref{levels}_box{width}x{length}"
+    case = Case.copy(ROOT / "tutorials" / "cubicBed", RUNS / name, env)
+    L, W = length*D, width*D
     (case.path / "system" / "blockMeshDict").write_text(f"""\
 FoamFile {{ version 2.0; format ascii; class dictionary; object blockMeshDict; }}
 vertices ((0 0 0) ({L!r} 0 0) ({L!r} {W!r} 0) (0 {W!r} 0)
           (0 0 {W!r}) ({L!r} 0 {W!r}) ({L!r} {W!r} {W!r}) (0 {W!r} {W!r}));
-blocks (hex (0 1 2 3 4 5 6 7) ({LENGTH*n} {WIDTH*n} {WIDTH*n}) simpleGrading (1 1 1));
+blocks (hex (0 1 2 3 4 5 6 7) ({length*n} {width*n} {width*n}) simpleGrading (1 1 1));
 boundary
 (
     inlet  {{ type patch; faces ((0 4 7 3)); }}
@@ -79,22 +117,35 @@ particles
         f"writeInterval   {end!r};" if line.startswith("writeInterval ") else line
         for line in text.splitlines()) + "\n"
     control.write_text(text)
+    if levels:
+        (case.path / "constant" / "dynamicMeshDict").write_text(REFINEMENT.format(
+            levels=levels, near=max(levels - 1, 1), far=max(levels - 2, 1)))
     case.run("blockMesh")
     return case
+
+
+def last_cell_count(case):
+    """Cells of the last mesh of a refined run (its log's last change)."""
+    changes = re.findall(r"^Mesh changed: (\d+) cells",
+                         (case.path / "log.pimpleDLMFoam").read_text(), re.M)
+    return int(changes[-1])
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--re", default="20,100")
+    parser.add_argument("--levels", type=int, default=0)
+    parser.add_argument("--box", default=f"{WIDTH},{LENGTH}")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12])
     args = parser.parse_args()
+    width, length = (int(v) for v in args.box.split(","))
 
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
     for re_number in [float(r) for r in args.re.split(",")]:
         reference = schiller_naumann(re_number)
         for n in args.resolutions:
-            case = make_case(re_number, n, env)
+            case = make_case(re_number, n, env, args.levels, width, length)
             seconds = timed_run(case, "pimpleDLMFoam")
             h = case.history()["sphere"]
             t, drag = h[:, 0], h[:, 10]
@@ -102,8 +153,15 @@ def main():
             cd = drag[window]/(1000*U**2*math.pi*D**2/8)
             drift = (cd[-1] - cd[0])/cd.mean()
             error = cd.mean()/reference - 1
-            merge_row(TABLE, HEADER, [re_number, n, cd.mean(), reference, error, drift,
-                                      seconds, len(t)])
+            if args.levels:
+                merge_row(REFINED_TABLE, REFINED_HEADER,
+                          [re_number, n, args.levels, n << args.levels, width, length,
+                           cd.mean(), reference, error, drift, seconds, len(t),
+                           last_cell_count(case)],
+                          key_columns=6)
+            else:
+                merge_row(TABLE, HEADER, [re_number, n, cd.mean(), reference, error,
+                                          drift, seconds, len(t)])
             print(f"Re={re_number:g} N={n:3d} C_D={cd.mean():.4f} Schiller-Naumann "
                   f"{reference:.4f} ({100*error:+.1f}%) drift={100*drift:+.2f}% "
                   f"wall={seconds:.0f}s steps={len(t)}", flush=True)
