@@ -57,19 +57,15 @@ void Foam::refinementTargets::particleGap::mark
     const List<boundBox>& boxes = cloud.cellBoxes();
     const PtrList<dlmParticle>& particles = cloud.particles();
 
-    const scalar baseSize = largestBaseCellSize(cloud, cellLevel);
-    const scalar widestGap =
-        cells_*targetCellSize(baseSize, 0)
-      + reach(boundBox(Zero, baseSize*vector::one), keep);
+    const scalar widestGap = searchMargin(cloud, cellLevel, cells_, keep);
 
     // Whether cell celli lies within the gap's width of the surface of
     // particle p (moving by motion until the next update)
     auto inGap = [&](const label celli, const dlmParticle& p, const scalar motion)
     {
-        const scalar width =
-            cells_*targetCellSize(cmptMax(boxes[celli].span()), cellLevel[celli])
-          + motion;
-        return surfaceDistance(p, C[celli]) - reach(boxes[celli], keep) <= width;
+        return
+            surfaceDistance(p, C[celli]) - reach(boxes[celli], keep)
+         <= bandWidth(cloud, cellLevel, cells_, celli) + motion;
     };
 
     DynamicList<label> nearCells;
@@ -170,7 +166,7 @@ void Foam::refinementTargets::particleGap::mark
                 continue;
             }
             const scalar width =
-                cells_*targetCellSize(cmptMax(boxes[celli].span()), cellLevel[celli])
+                bandWidth(cloud, cellLevel, cells_, celli)
               + reach(boxes[celli], keep);
             if (wallTree.findNearest(C[celli], sqr(width)).hit())
             {

@@ -58,11 +58,8 @@ void Foam::refinementTargets::particleSurface::mark
     const vectorField& C = cloud.mesh().C();
     const List<boundBox>& boxes = cloud.cellBoxes();
 
-    // The search box's margin: the widest band and test of any local cell
-    const scalar baseSize = largestBaseCellSize(cloud, cellLevel);
     const scalar widestBand =
-        max(cellsOutside_, cellsInside_)*targetCellSize(baseSize, 0)
-      + reach(boundBox(Zero, baseSize*vector::one), keep);
+        searchMargin(cloud, cellLevel, max(cellsOutside_, cellsInside_), keep);
 
     DynamicList<label> nearCells;
     for (const dlmParticle& p : cloud.particles())
@@ -77,14 +74,14 @@ void Foam::refinementTargets::particleSurface::mark
             {
                 continue;
             }
-            const scalar h =
-                targetCellSize(cmptMax(boxes[celli].span()), cellLevel[celli]);
             const scalar cellReach = reach(boxes[celli], keep);
             const scalar d = surfaceDistance(p, C[celli]);
             if
             (
-                d - cellReach <= cellsOutside_*h + motion
-             && d + cellReach >= -(cellsInside_*h + motion)
+                d - cellReach
+             <= bandWidth(cloud, cellLevel, cellsOutside_, celli) + motion
+             && d + cellReach
+             >= -(bandWidth(cloud, cellLevel, cellsInside_, celli) + motion)
             )
             {
                 targetLevel[celli] = level();

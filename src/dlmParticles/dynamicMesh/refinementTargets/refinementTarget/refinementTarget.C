@@ -25,26 +25,45 @@ Foam::scalar Foam::refinementTarget::targetCellSize
     const label cellLevel
 ) const
 {
-    return size*pow(2.0, scalar(cellLevel - level_));
+    return std::ldexp(size, cellLevel - level_);
 }
 
 
-Foam::scalar Foam::refinementTarget::largestBaseCellSize
+Foam::scalar Foam::refinementTarget::searchMargin
 (
     const dlmParticleCloud& cloud,
-    const labelList& cellLevel
-)
+    const labelList& cellLevel,
+    const scalar cells,
+    const bool keep
+) const
 {
-    scalar largest = 0;
+    // The largest local cell's size at the mesh's level 0 bounds them all
+    scalar baseSize = 0;
     forAll(cellLevel, celli)
     {
-        largest = max
+        baseSize = max
         (
-            largest,
-            cmptMax(cloud.cellBoxes()[celli].span())*pow(2.0, cellLevel[celli])
+            baseSize,
+            std::ldexp(cmptMax(cloud.cellBoxes()[celli].span()), cellLevel[celli])
         );
     }
-    return largest;
+    return
+        cells*targetCellSize(baseSize, 0)
+      + reach(boundBox(Zero, baseSize*vector::one), keep);
+}
+
+
+Foam::scalar Foam::refinementTarget::bandWidth
+(
+    const dlmParticleCloud& cloud,
+    const labelList& cellLevel,
+    const scalar cells,
+    const label celli
+) const
+{
+    return
+        cells
+       *targetCellSize(cmptMax(cloud.cellBoxes()[celli].span()), cellLevel[celli]);
 }
 
 
