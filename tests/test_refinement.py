@@ -264,12 +264,15 @@ def test_refined_run_restarts_exactly_and_runs_on_two_and_three_ranks_as_in_seri
 
 @pytest.mark.parametrize("tutorial, mesh_type, message", [
     ("periodicArray", "dynamicInkJetFvMesh", "may only be refined"),
-    ("draftingKissingTumbling", "dlmRefineFvMesh", "refinement works on 3D meshes only"),
+    ("draftingKissingTumbling", "dynamicRefineFvMesh", "refine 2D meshes with dlmRefineFvMesh"),
+    ("draftingKissingTumbling", "dlmRefineFvMesh", "A 2D mesh is refined by the particles' targets"),
 ])
 def test_a_dynamic_mesh_the_particles_cannot_follow_is_an_input_error(
         tmp_path, foam_env, tutorial, mesh_type, message):
-    """A moving mesh, or refinement of a 2D case (dynamicRefineFvMesh would
-    split its one-cell-thick layer), stops the run naming the dictionary."""
+    """A moving mesh, refinement of a 2D case by dynamicRefineFvMesh (it
+    would split the one-cell-thick layer), or by alpha.solid's thresholds
+    (2D cases are refined by targets), stops the run naming the
+    dictionary."""
     case = Case.copy(HERE.parent / "tutorials" / tutorial, tmp_path / tutorial, foam_env)
     (case.path / "constant" / "dynamicMeshDict").write_text(
         REFINE_AT_SURFACES.replace("dynamicFvMesh   dlmRefineFvMesh;",

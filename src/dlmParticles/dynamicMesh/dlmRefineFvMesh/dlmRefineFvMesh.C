@@ -11,6 +11,7 @@
 #include "mapPolyMesh.H"
 #include "orderedProcessorCyclicPolyPatch.H"
 #include "volFields.H"
+#include "polyTopoChange.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -65,6 +66,14 @@ void Foam::dlmRefineFvMesh::readTargets()
     const dictionary* targetsDict = coeffs.findDict("targets");
     if (!targetsDict)
     {
+        if (planar_)
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "A 2D mesh is refined by the particles' targets: give"
+                << " dynamicRefineFvMeshCoeffs a 'targets' dictionary"
+                << " (refinement by a field's thresholds works in 3D only)"
+                << exit(FatalIOError);
+        }
         return;
     }
 
@@ -98,6 +107,12 @@ void Foam::dlmRefineFvMesh::readTargets()
 }
 
 
+const Foam::labelList& Foam::dlmRefineFvMesh::cellLevel() const
+{
+    return planar_ ? planar_->cellLevel() : meshCutter().cellLevel();
+}
+
+
 Foam::labelList Foam::dlmRefineFvMesh::targetLevels
 (
     const dlmParticleCloud& cloud,
@@ -108,7 +123,7 @@ Foam::labelList Foam::dlmRefineFvMesh::targetLevels
     labelList level(nCells(), Zero);
     for (const refinementTarget& target : targets_)
     {
-        target.mark(cloud, meshCutter().cellLevel(), lookAhead, keep, level);
+        target.mark(cloud, cellLevel(), lookAhead, keep, level);
     }
     return level;
 }
@@ -159,11 +174,10 @@ bool Foam::dlmRefineFvMesh::updateToTargets(const dictionary& coeffs)
     const scalar lookAhead = refineInterval*time().deltaTValue();
     labelList keepLevel(targetLevels(cloud, lookAhead, true));
 
-    bool changed = false;
     bitSet refineCell(nCells());
     {
         const labelList level(targetLevels(cloud, lookAhead, false));
-        const labelList& cellLevel = meshCutter().cellLevel();
+        const labelList& cellLevel = this->cellLevel();
         forAll(level, celli)
         {
             if (cellLevel[celli] < level[celli])
@@ -171,6 +185,26 @@ bool Foam::dlmRefineFvMesh::updateToTargets(const dictionary& coeffs)
                 refineCell.set(celli);
             }
         }
+    }
+
+    bool changed = false;
+    if (planar_)
+    {
+        changed = refinePlanar(refineCell, keepLevel, maxCells);
+        if (timeIndex > 0)
+        {
+            for (label layer = 0; layer < nBufferLayers; ++layer)
+            {
+                extendMarkedCells(refineCell);
+            }
+            changed = unrefinePlanar(refineCell, keepLevel) || changed;
+        }
+        topoChanging(changed);
+        if (changed)
+        {
+            moving(false);
+        }
+        return changed;
     }
 
     if (globalData().nTotalCells() < maxCells)
@@ -270,6 +304,173 @@ bool Foam::dlmRefineFvMesh::updateToTargets(const dictionary& coeffs)
 }
 
 
+Foam::autoPtr<Foam::mapPolyMesh> Foam::dlmRefineFvMesh::changePlanarMesh
+(
+    polyTopoChange& meshMod
+)
+{
+    autoPtr<mapPolyMesh> map = meshMod.changeMesh(*this, false);
+    updateMesh(*map);
+    planar_->updateMesh(*map);
+    return map;
+}
+
+
+bool Foam::dlmRefineFvMesh::refinePlanar
+(
+    bitSet& refineCell,
+    labelList& keepLevel,
+    const label maxCells
+)
+{
+    bitSet refine(planar_->consistentRefinement(refineCell));
+    const label nAdded = 3*returnReduce(refine.count(), sumOp<label>());
+    if (nAdded == 0)
+    {
+        return false;
+    }
+    const label nCellsNow = globalData().nTotalCells();
+    if (nCellsNow + nAdded > maxCells)
+    {
+        if (!heldAtMaxCells_)
+        {
+            WarningInFunction
+                << time().constant()/"dynamicMeshDict" << ": refining would"
+                << " take the mesh from " << nCellsNow << " to "
+                << nCellsNow + nAdded << " cells, above maxCells " << maxCells
+                << ": nothing is refined, near the particles neither, until"
+                << " cells are unrefined" << endl;
+        }
+        heldAtMaxCells_ = true;
+        return false;
+    }
+    heldAtMaxCells_ = false;
+
+    bitSet marked(refineCell);
+    marked |= refine;
+    label maxLevel = 0;
+    for (const label celli : refine)
+    {
+        maxLevel = max(maxLevel, planar_->cellLevel()[celli]);
+    }
+    reduce(maxLevel, maxOp<label>());
+
+    // Level by level, the coarsest first: a side then has one hanging point
+    // at most as its cells split
+    for (label level = 0; level <= maxLevel; ++level)
+    {
+        const labelList oldLevel(planar_->cellLevel());
+        DynamicList<label> cells;
+        for (const label celli : refine)
+        {
+            if (oldLevel[celli] == level)
+            {
+                cells.append(celli);
+            }
+        }
+        if (returnReduce(cells.size(), sumOp<label>()) == 0)
+        {
+            continue;
+        }
+
+        polyTopoChange meshMod(*this);
+        planar_->setRefinement(level, cells, meshMod);
+        const autoPtr<mapPolyMesh> map = changePlanarMesh(meshMod);
+
+        const labelList& cellMap = map().cellMap();
+        bitSet newRefine(nCells());
+        bitSet newMarked(nCells());
+        labelList newKeepLevel(nCells());
+        forAll(cellMap, celli)
+        {
+            const label oldCelli = cellMap[celli];
+            newKeepLevel[celli] = keepLevel[oldCelli];
+            newMarked.set(celli, marked.test(oldCelli));
+            newRefine.set
+            (
+                celli,
+                refine.test(oldCelli) && oldLevel[oldCelli] > level
+            );
+        }
+        refine.transfer(newRefine);
+        marked.transfer(newMarked);
+        keepLevel.transfer(newKeepLevel);
+    }
+    refineCell.transfer(marked);
+    return true;
+}
+
+
+bool Foam::dlmRefineFvMesh::unrefinePlanar
+(
+    const bitSet& markedCell,
+    const labelList& keepLevel
+)
+{
+    const labelList& level = planar_->cellLevel();
+    DynamicList<label> candidates;
+    for (const label pointi : planar_->splitPoints())
+    {
+        bool merge = true;
+        for (const label celli : pointCells()[pointi])
+        {
+            if (markedCell.test(celli) || level[celli] <= keepLevel[celli])
+            {
+                merge = false;
+            }
+        }
+        if (merge)
+        {
+            candidates.append(pointi);
+        }
+    }
+    labelList splitPoints(planar_->consistentUnrefinement(candidates));
+
+    label maxLevel = 0;
+    for (const label pointi : splitPoints)
+    {
+        maxLevel = max(maxLevel, planar_->pointLevel()[pointi]);
+    }
+    reduce(maxLevel, maxOp<label>());
+
+    // Level by level, the finest first; cells merged once are not merged
+    // again in this update (their split points were not found above)
+    bool changed = false;
+    for (label mergeLevel = maxLevel; mergeLevel > 0; --mergeLevel)
+    {
+        DynamicList<label> points;
+        for (const label pointi : splitPoints)
+        {
+            if (planar_->pointLevel()[pointi] == mergeLevel)
+            {
+                points.append(pointi);
+            }
+        }
+        if (returnReduce(points.size(), sumOp<label>()) == 0)
+        {
+            continue;
+        }
+
+        polyTopoChange meshMod(*this);
+        planar_->setUnrefinement(mergeLevel, points, meshMod);
+        const autoPtr<mapPolyMesh> map = changePlanarMesh(meshMod);
+        changed = true;
+
+        const labelList& reversePointMap = map().reversePointMap();
+        DynamicList<label> remaining(splitPoints.size());
+        for (const label pointi : splitPoints)
+        {
+            if (reversePointMap[pointi] >= 0)
+            {
+                remaining.append(reversePointMap[pointi]);
+            }
+        }
+        splitPoints = std::move(remaining);
+    }
+    return changed;
+}
+
+
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
 void Foam::dlmRefineFvMesh::selectRefineCandidates
@@ -345,9 +546,14 @@ Foam::labelList Foam::dlmRefineFvMesh::selectUnrefinePoints
 Foam::dlmRefineFvMesh::dlmRefineFvMesh(const IOobject& io)
 :
     dynamicRefineFvMesh(io),
-    atMaxCells_(false)
+    atMaxCells_(false),
+    heldAtMaxCells_(false)
 {
     orderedProcessorCyclicPolyPatch::replacePatches(*this);
+    if (nSolutionD() < 3)
+    {
+        planar_.reset(new planarRefinement(*this));
+    }
     readTargets();
 }
 
@@ -407,6 +613,80 @@ bool Foam::dlmRefineFvMesh::update()
     topoChanging(changed);
     warnAtMaxCells();
     return changed;
+}
+
+
+void Foam::dlmRefineFvMesh::mapFields(const mapPolyMesh& mpm)
+{
+    dynamicRefineFvMesh::mapFields(mpm);
+    if (planar_)
+    {
+        mapNewInternalPlanarFaces<scalar>(mpm.faceMap());
+        mapNewInternalPlanarFaces<vector>(mpm.faceMap());
+    }
+}
+
+
+bool Foam::dlmRefineFvMesh::writeObject
+(
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp,
+    const bool valid
+) const
+{
+    // The points of a changed mesh at full precision: rounded to the
+    // fields' writePrecision, the cells of a restart would be boxes no more
+    regIOobject& pointsIO = const_cast<pointIOField&>
+    (
+        lookupObject<pointIOField>("points")
+    );
+    const IOobject::writeOption pointsWrite = pointsIO.writeOpt();
+    pointsIO.writeOpt() = IOobject::NO_WRITE;
+
+    bool writeOk = true;
+    if (!planar_)
+    {
+        writeOk = dynamicRefineFvMesh::writeObject(fmt, ver, cmp, valid);
+    }
+    else
+    {
+        writeOk =
+            dynamicFvMesh::writeObject(fmt, ver, cmp, valid)
+         && planar_->write(time().timeName());
+        if (dumpLevel_)
+        {
+            volScalarField scalarCellLevel
+            (
+                IOobject
+                (
+                    "cellLevel",
+                    time().timeName(),
+                    *this,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE,
+                    false
+                ),
+                *this,
+                dimensionedScalar(dimless, Zero)
+            );
+            forAll(planar_->cellLevel(), celli)
+            {
+                scalarCellLevel[celli] = planar_->cellLevel()[celli];
+            }
+            writeOk = writeOk && scalarCellLevel.write();
+        }
+    }
+
+    pointsIO.writeOpt() = pointsWrite;
+    if (pointsWrite == IOobject::AUTO_WRITE)
+    {
+        const unsigned precision = IOstream::defaultPrecision();
+        IOstream::defaultPrecision(max(precision, 17u));
+        writeOk = writeOk && pointsIO.writeObject(fmt, ver, cmp, valid);
+        IOstream::defaultPrecision(precision);
+    }
+    return writeOk;
 }
 
 

@@ -54,7 +54,6 @@ void Foam::refinementTargets::particleGap::mark
 {
     const fvMesh& mesh = cloud.mesh();
     const vectorField& C = mesh.C();
-    const List<boundBox>& boxes = cloud.cellBoxes();
     const PtrList<dlmParticle>& particles = cloud.particles();
 
     const scalar widestGap = searchMargin(cloud, cellLevel, cells_, keep);
@@ -64,7 +63,7 @@ void Foam::refinementTargets::particleGap::mark
     auto inGap = [&](const label celli, const dlmParticle& p, const scalar motion)
     {
         return
-            surfaceDistance(p, C[celli]) - reach(boxes[celli], keep)
+            surfaceDistance(p, C[celli]) - reach(cloud, celli, keep)
          <= bandWidth(cloud, cellLevel, cells_, celli) + motion;
     };
 
@@ -167,7 +166,7 @@ void Foam::refinementTargets::particleGap::mark
             }
             const scalar width =
                 bandWidth(cloud, cellLevel, cells_, celli)
-              + reach(boxes[celli], keep);
+              + reach(cloud, celli, keep);
             if (wallTree.findNearest(C[celli], sqr(width)).hit())
             {
                 targetLevel[celli] = level();

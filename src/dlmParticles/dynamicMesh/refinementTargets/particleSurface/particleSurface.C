@@ -56,7 +56,6 @@ void Foam::refinementTargets::particleSurface::mark
 ) const
 {
     const vectorField& C = cloud.mesh().C();
-    const List<boundBox>& boxes = cloud.cellBoxes();
 
     const scalar widestBand =
         searchMargin(cloud, cellLevel, max(cellsOutside_, cellsInside_), keep);
@@ -74,7 +73,7 @@ void Foam::refinementTargets::particleSurface::mark
             {
                 continue;
             }
-            const scalar cellReach = reach(boxes[celli], keep);
+            const scalar cellReach = reach(cloud, celli, keep);
             const scalar d = surfaceDistance(p, C[celli]);
             if
             (

@@ -19,6 +19,46 @@ namespace Foam
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
+Foam::vector Foam::refinementTarget::solvedSpan
+(
+    const dlmParticleCloud& cloud,
+    const vector& span
+)
+{
+    const Vector<label>& solutionD = cloud.mesh().solutionD();
+    vector solved(span);
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (solutionD[d] < 0)
+        {
+            solved[d] = 0;
+        }
+    }
+    return solved;
+}
+
+
+Foam::scalar Foam::refinementTarget::cellSize
+(
+    const dlmParticleCloud& cloud,
+    const label celli
+)
+{
+    return cmptMax(solvedSpan(cloud, cloud.cellBoxes()[celli].span()));
+}
+
+
+Foam::scalar Foam::refinementTarget::reach
+(
+    const dlmParticleCloud& cloud,
+    const label celli,
+    const bool keep
+)
+{
+    return reach(solvedSpan(cloud, cloud.cellBoxes()[celli].span()), keep);
+}
+
+
 Foam::scalar Foam::refinementTarget::targetCellSize
 (
     const scalar size,
@@ -44,12 +84,12 @@ Foam::scalar Foam::refinementTarget::searchMargin
         baseSize = max
         (
             baseSize,
-            std::ldexp(cmptMax(cloud.cellBoxes()[celli].span()), cellLevel[celli])
+            std::ldexp(cellSize(cloud, celli), cellLevel[celli])
         );
     }
     return
         cells*targetCellSize(baseSize, 0)
-      + reach(boundBox(Zero, baseSize*vector::one), keep);
+      + reach(solvedSpan(cloud, baseSize*vector::one), keep);
 }
 
 
@@ -63,7 +103,7 @@ Foam::scalar Foam::refinementTarget::bandWidth
 {
     return
         cells
-       *targetCellSize(cmptMax(cloud.cellBoxes()[celli].span()), cellLevel[celli]);
+       *targetCellSize(cellSize(cloud, celli), cellLevel[celli]);
 }
 
 
