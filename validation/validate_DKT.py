@@ -17,7 +17,13 @@ rows); writes results/DKT.png (the curves of this call's runs) and
 results/DKT_speed_error.png. --end-time runs past the reference's 0.3 s to
 see a late tumble.
 
-    validation/validate_DKT.py [--np 1] [--end-time 0.3] [N ...]   (default 12 16 24)
+--levels L refines the mesh in the plane at the disks (issue 32): N is then
+the finest cells per diameter, at the disks' surfaces and in the gap between
+them, on a base mesh of N/2^L (their wakes one level less); those rows go to
+results/DKT_refined.csv, beside the uniform mesh's in the speed-error plot.
+
+    validation/validate_DKT.py [--np 1] [--end-time 0.3] [--levels L] [N ...]
+                               (default N = 12 16 24)
 """
 
 import argparse
@@ -81,21 +87,53 @@ def rms_deviation(h, figure, scale, sign=1):
     return np.sqrt(np.mean(np.concatenate(deviations)**2))/scale
 
 
+REFINEMENT = """\
+FoamFile {{ version 2.0; format ascii; class dictionary; object dynamicMeshDict; }}
+dynamicFvMesh   dlmRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{{
+    refineInterval  3;
+    nBufferLayers   1;
+    maxCells        1000000;
+    correctFluxes
+    (
+        (phi none) (phi_0 none) (phi_0_0 none) (ghf none) (UBlendingFactor none)
+    );
+    dumpLevel       true;
+    targets
+    {{
+        surface {{ type particleSurface; level {levels}; }}
+        gap     {{ type particleGap; level {levels}; walls false; }}
+        wake    {{ type vorticity; level {wake}; threshold 0.2; }}
+    }}
+}}
+"""
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--np", type=int, default=1)
     parser.add_argument("--end-time", type=float, default=0.3)
+    parser.add_argument("--levels", type=int, default=0)
     parser.add_argument("resolutions", nargs="*", type=int, default=[12, 16, 24])
     args = parser.parse_args()
+    levels = args.levels
+    for n in args.resolutions:
+        if n % (1 << levels):
+            raise SystemExit(f"{n} cells per diameter is not a base mesh's refined"
+                             f" {levels} levels")
 
     env = foam_environment()
     RESULTS.mkdir(parents=True, exist_ok=True)
     histories = {}
     for n in args.resolutions:
         case = Case.copy(ROOT / "tutorials" / "draftingKissingTumbling",
-                         RUNS / f"DKT_{n}", env)
+                         RUNS / (f"DKT_{n}" + (f"_ref{levels}" if levels else "")), env)
         case.set("system/controlDict", "endTime", args.end_time)
-        seconds = timed_run(case, "./Allrun", n, args.np)
+        if levels:
+            (case.path / "constant" / "dynamicMeshDict").write_text(
+                REFINEMENT.format(levels=levels, wake=max(levels - 1, 1)))
+        seconds = timed_run(case, "./Allrun", n >> levels, args.np)
         h = case.history()
         histories[n] = h
         e = events(h)
@@ -112,7 +150,11 @@ def main():
         header = (["cellsPerDiameter"] + list(EVENTS) + ["minSeparation_d"]
                   + [f"{k}_relError" for k in EVENTS]
                   + ["rmsPosition_d", "rmsVelocity_rel", "rmsLateral_d", "wallTime_s"])
-        merge_row(RESULTS / "DKT.csv", header, row, key_columns=1)
+        if levels:
+            merge_row(RESULTS / "DKT_refined.csv", header + ["levels"], row + [levels],
+                      key_columns=1)
+        else:
+            merge_row(RESULTS / "DKT.csv", header, row, key_columns=1)
 
     import matplotlib
     matplotlib.use("Agg")
@@ -136,10 +178,18 @@ def main():
 
     fig, ax = plt.subplots(figsize=(6, 4))
     rows = stored_rows(RESULTS / "DKT.csv")
-    series = {k: [(r[-1], abs(r[6 + j]), r[0]) for r in rows if np.isfinite(r[6 + j])]
+    series = {k: [(r[13], abs(r[6 + j]), r[0]) for r in rows if np.isfinite(r[6 + j])]
               for j, k in enumerate(EVENTS)}
-    plot_speed_error(ax, series, target=5)
-    ax.set_title("DKT: event errors against wall time (labels: cells/d)")
+    colors = {k: f"C{j}" for j, k in enumerate(EVENTS)}
+    plot_speed_error(ax, series, target=5, colors=colors)
+    refined = stored_rows(RESULTS / "DKT_refined.csv")
+    series = {f"{k} refined": [(r[13], abs(r[6 + j]), f"{int(r[0])}, {int(r[14])} levels")
+                               for r in refined if np.isfinite(r[6 + j])]
+              for j, k in enumerate(EVENTS)}
+    plot_speed_error(ax, series, fmt="s--",
+                     colors={f"{k} refined": c for k, c in colors.items()})
+    ax.legend(fontsize=6)
+    ax.set_title("DKT: event errors against wall time (labels: finest cells/d)")
     fig.tight_layout()
     fig.savefig(RESULTS / "DKT_speed_error.png", dpi=120)
 
