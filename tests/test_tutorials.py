@@ -151,6 +151,39 @@ def test_ten_cate_refined_on_two_ranks_runs_reconstructs_and_cleans(tmp_path, fo
     assert snapshot(case) == before
 
 
+def test_falling_disk_refined_in_the_plane_on_two_ranks_runs_reconstructs_and_cleans(
+        tmp_path, foam_env):
+    """tutorials/fallingDisk at 4 cells per diameter refined twice in the
+    plane (Allrun's 4th argument) on 2 ranks for 0.2 s: the mesh follows
+    the disk and stays one cell thick, reconstructParMesh and reconstructPar
+    give each written time its refined mesh with cellLevel, the tracked
+    files stay, and Allclean removes the dynamicMeshDict it switched on."""
+    case = tmp_path / "fallingDisk"
+    shutil.copytree(ROOT / "tutorials" / "fallingDisk", case,
+                    ignore=shutil.ignore_patterns(*IGNORED))
+    control = case / "system" / "controlDict"
+    control.write_text(control.read_text().replace("endTime         1;",
+                                                   "endTime         0.2;"))
+    before = snapshot(case)
+    result = run(case / "Allrun", 0.1, 4, 2, 2, env=foam_env)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "refined at the disk's surface to 16 cells per diameter" in result.stdout
+    changes = re.findall(r"^Mesh changed: (\d+) cells",
+                         (case / "log.pimpleDLMFoam").read_text(), re.M)
+    assert len(changes) >= 5
+    assert Case(case, foam_env).times()[-1] == "0.2"
+    level = Case(case, foam_env).internal_field("0.2/cellLevel")
+    assert level.size == int(changes[-1]) > 40*80
+    assert level.max() == 2
+    boundary = (case / "0.2" / "polyMesh" / "boundary").read_text()
+    plane = boundary[boundary.index("frontAndBack"):]
+    assert int(re.search(r"nFaces\s+(\d+);", plane).group(1)) == 2*level.size
+    after = snapshot(case)
+    assert not [f for f, digest in before.items() if after.get(f) != digest]
+    assert run(case / "Allclean", env=foam_env).returncode == 0
+    assert snapshot(case) == before
+
+
 def test_a_tutorial_outside_any_project_without_the_environment_says_what_to_source(
         tmp_path):
     """No DLM_PROJECT_DIR and no project above the case: the Allrun stops at
