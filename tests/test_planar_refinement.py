@@ -170,11 +170,12 @@ def test_a_refined_2d_time_decomposes_continues_on_two_ranks_and_reconstructs(
     assert "Mesh OK." in check.log
 
 
-def translating_disk_case(tmp_path, foam_env):
+def translating_disk_case(tmp_path, foam_env, name="translating"):
     """A 2D periodic box (4 cm square, 16 x 16 cells) holding a disk of 1 cm
-    radius prescribed to move at (1, 0.5) cm/s through water moving with it:
-    the exact solution is the uniform flow."""
-    case = Case.copy(DISK, tmp_path / "translating", foam_env)
+    radius across its periodic sides x = 0 and 4 cm, prescribed to move at
+    (1, 0.5) cm/s through water moving with it: the exact solution is the
+    uniform flow."""
+    case = Case.copy(DISK, tmp_path / name, foam_env)
     (case.path / "system" / "blockMeshDict").write_text("""\
 FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
 vertices ((0 0 0) (0.04 0 0) (0.04 0.04 0) (0 0.04 0)
@@ -199,7 +200,7 @@ particles
         shape       disk;
         radius      {RADIUS!r};
         density     1000;
-        position    (0.0193 0.0207 0);
+        position    (0.0335 0.0207 0);
         motion      prescribed;
         velocity    {velocity};
     }}
@@ -230,7 +231,9 @@ particles
 def test_in_plane_refinement_following_a_translating_disk_keeps_the_uniform_flow_exact(
         tmp_path, foam_env):
     """Refined and unrefined at every step about a disk that translates with
-    the water through a periodic box, the flow
+    the water through a periodic box (on both sides of its periodic
+    patches: their faces split and merged as the cells beside them), the
+    flow
     stays uniform to round-off: children keep their parent's velocity,
     merged cells the mean, the face velocity on new faces interpolated and
     the flux made divergence-free; the disk's solid area stays exact."""
@@ -240,6 +243,9 @@ def test_in_plane_refinement_following_a_translating_disk_keeps_the_uniform_flow
     counts = cell_counts(case)
     assert len(counts) >= 15 and min(counts) > 16*16
     case.run("postProcess", "-func", "writeCellVolumes")
+    case.run("postProcess", "-func", "writeCellCentres", "-latestTime")
+    across = case.internal_field("0.4/C")[:, 0] < 0.004
+    assert (case.internal_field("0.4/cellLevel")[across] == 2).sum() > 20
     times = [t for t in case.times() if float(t) > 0]
     assert times[-1] == "0.4"
     for time in times:
@@ -249,3 +255,14 @@ def test_in_plane_refinement_following_a_translating_disk_keeps_the_uniform_flow
         assert np.dot(alpha, volumes) == pytest.approx(math.pi*RADIUS**2*DEPTH, rel=1e-12)
         U = case.internal_field(f"{time}/U")
         assert np.abs(U - [SPEED, 0.5*SPEED, 0]).max() < 1e-12*SPEED
+
+    parallel = translating_disk_case(tmp_path, foam_env, "parallel")
+    parallel.run("blockMesh")
+    parallel.set("system/decomposeParDict", "numberOfSubdomains", 3)
+    parallel.run("decomposePar")
+    parallel.run("pimpleDLMFoam", np=3)
+    assert cell_counts(parallel) == counts
+    parallel.run("reconstructParMesh", "-mergeTol", "1e-6", "-latestTime")
+    parallel.run("reconstructPar", "-latestTime")
+    U = parallel.internal_field("0.4/U")
+    assert np.abs(U - [SPEED, 0.5*SPEED, 0]).max() < 1e-12*SPEED
