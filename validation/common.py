@@ -15,6 +15,30 @@ sys.path.insert(0, str(ROOT / "tests"))
 from foamcase import Case, foam_environment, packed_bed_rows  # noqa: E402,F401
 
 
+def refinement_dict(targets):
+    """constant/dynamicMeshDict refining at the particles (dlmRefineFvMesh),
+    every third step, by the given entries of its targets dictionary."""
+    return f"""\
+FoamFile {{ version 2.0; format ascii; class dictionary; object dynamicMeshDict; }}
+dynamicFvMesh   dlmRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{{
+    refineInterval  3;
+    nBufferLayers   1;
+    maxCells        4000000;
+    correctFluxes
+    (
+        (phi none) (phi_0 none) (phi_0_0 none) (ghf none) (UBlendingFactor none)
+    );
+    dumpLevel       true;
+    targets
+    {{
+{targets}
+    }}
+}}
+"""
+
+
 def read_csv(name):
     """Numeric columns of a reference CSV (lines with # skipped, header row)."""
     import numpy as np

@@ -31,7 +31,7 @@ import argparse
 import numpy as np
 
 from common import (RESULTS, ROOT, RUNS, Case, foam_environment, merge_row,
-                    plot_speed_error, read_csv, stored_rows, timed_run)
+                    plot_speed_error, read_csv, refinement_dict, stored_rows, timed_run)
 
 D, TOP, CENTRE = 0.0025, 0.06, 0.01
 EVENTS = {"peakVelocity_cm_s": 19.3, "peakTime_s": 0.165, "kissTime_s": 0.167,
@@ -87,29 +87,6 @@ def rms_deviation(h, figure, scale, sign=1):
     return np.sqrt(np.mean(np.concatenate(deviations)**2))/scale
 
 
-REFINEMENT = """\
-FoamFile {{ version 2.0; format ascii; class dictionary; object dynamicMeshDict; }}
-dynamicFvMesh   dlmRefineFvMesh;
-dynamicRefineFvMeshCoeffs
-{{
-    refineInterval  3;
-    nBufferLayers   1;
-    maxCells        1000000;
-    correctFluxes
-    (
-        (phi none) (phi_0 none) (phi_0_0 none) (ghf none) (UBlendingFactor none)
-    );
-    dumpLevel       true;
-    targets
-    {{
-        surface {{ type particleSurface; level {levels}; }}
-        gap     {{ type particleGap; level {levels}; walls false; }}
-        wake    {{ type vorticity; level {wake}; threshold 0.2; }}
-    }}
-}}
-"""
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--np", type=int, default=1)
@@ -131,8 +108,11 @@ def main():
                          RUNS / (f"DKT_{n}" + (f"_ref{levels}" if levels else "")), env)
         case.set("system/controlDict", "endTime", args.end_time)
         if levels:
-            (case.path / "constant" / "dynamicMeshDict").write_text(
-                REFINEMENT.format(levels=levels, wake=max(levels - 1, 1)))
+            (case.path / "constant" / "dynamicMeshDict").write_text(refinement_dict(
+                f"        surface {{ type particleSurface; level {levels}; }}\n"
+                f"        gap     {{ type particleGap; level {levels}; walls false; }}\n"
+                f"        wake    {{ type vorticity; level {max(levels - 1, 1)};"
+                " threshold 0.2; }"))
         seconds = timed_run(case, "./Allrun", n >> levels, args.np)
         h = case.history()
         histories[n] = h

@@ -28,7 +28,8 @@ import re
 
 import numpy as np
 
-from common import Case, RESULTS, ROOT, RUNS, foam_environment, merge_row, timed_run
+from common import (Case, RESULTS, ROOT, RUNS, foam_environment, merge_row,
+                    refinement_dict, timed_run)
 
 TABLE = RESULTS / "sphereDrag.csv"
 HEADER = ["Re", "cellsPerDiameter", "CD", "CD_SchillerNaumann", "relError", "drift",
@@ -39,29 +40,6 @@ REFINED_HEADER = ["Re", "baseCellsPerDiameter", "levels", "surfaceCellsPerDiamet
                   "wallTime_s", "steps", "lastCells"]
 D, U = 0.004, 0.5
 LENGTH, WIDTH, CENTRE = 12, 6, 4       # in diameters
-
-REFINEMENT = """\
-FoamFile {{ version 2.0; format ascii; class dictionary; object dynamicMeshDict; }}
-dynamicFvMesh   dlmRefineFvMesh;
-dynamicRefineFvMeshCoeffs
-{{
-    refineInterval  3;
-    nBufferLayers   1;
-    maxCells        4000000;
-    correctFluxes
-    (
-        (phi none) (phi_0 none) (phi_0_0 none) (ghf none) (UBlendingFactor none)
-    );
-    dumpLevel       true;
-    targets
-    {{
-        surface  {{ type particleSurface; level {levels}; }}
-        nearWake {{ type vorticity; level {near}; threshold 0.2; }}
-        farWake  {{ type vorticity; level {far}; threshold 0.05; }}
-    }}
-}}
-"""
-
 
 def schiller_naumann(re_number):
     return 24/re_number*(1 + 0.15*re_number**0.687)
@@ -118,8 +96,12 @@ particles
         for line in text.splitlines()) + "\n"
     control.write_text(text)
     if levels:
-        (case.path / "constant" / "dynamicMeshDict").write_text(REFINEMENT.format(
-            levels=levels, near=max(levels - 1, 1), far=max(levels - 2, 1)))
+        (case.path / "constant" / "dynamicMeshDict").write_text(refinement_dict(
+            f"        surface  {{ type particleSurface; level {levels}; }}\n"
+            f"        nearWake {{ type vorticity; level {max(levels - 1, 1)};"
+            " threshold 0.2; }\n"
+            f"        farWake  {{ type vorticity; level {max(levels - 2, 1)};"
+            " threshold 0.05; }"))
     case.run("blockMesh")
     return case
 
