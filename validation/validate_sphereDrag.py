@@ -16,9 +16,16 @@ mesh's cells per diameter, the sphere's surface band (particleSurface,
 U/R) N 2^(L-1) and the far wake (above 0.05 U/R) N 2^(L-2); --box W,L
 sets the box's width and length in diameters (the sphere 4 D behind the
 inlet), to show how far the lateral array's confinement moves C_D. Those
-runs go to results/sphereDrag_refined.csv.
+runs go to results/sphereDrag_refined.csv, with the lift coefficient C_L =
+|F_lateral|/(rho U^2 pi D^2/8) over the same window and its range: above
+Re 210 the wake leaves the axis (Johnson & Patel 1999: steady and oblique
+up to about 270, then shedding; at Re 300 mean C_D 0.656, C_L 0.069).
+--duration sets the run's length in D/U (30), --offset moves the sphere
+off the mesh's symmetry by (0, 1, 2) times that many diameters, so that
+the wake's symmetry breaks at once rather than when round-off has grown.
 
-    validation/validate_sphereDrag.py [--re 20,100] [--levels L] [--box 6,12] [N ...]
+    validation/validate_sphereDrag.py [--re 20,100] [--levels L] [--box 6,12]
+                                      [--duration 30] [--offset 0] [N ...]
                                       (default N = 8 12)
 """
 
@@ -37,7 +44,8 @@ HEADER = ["Re", "cellsPerDiameter", "CD", "CD_SchillerNaumann", "relError", "dri
 REFINED_TABLE = RESULTS / "sphereDrag_refined.csv"
 REFINED_HEADER = ["Re", "baseCellsPerDiameter", "levels", "surfaceCellsPerDiameter",
                   "widthD", "lengthD", "CD", "CD_SchillerNaumann", "relError", "drift",
-                  "wallTime_s", "steps", "lastCells"]
+                  "wallTime_s", "steps", "lastCells", "CL", "CLrange", "durationDU",
+                  "offsetD"]
 D, U = 0.004, 0.5
 LENGTH, WIDTH, CENTRE = 12, 6, 4       # in diameters
 
@@ -45,10 +53,13 @@ def schiller_naumann(re_number):
     return 24/re_number*(1 + 0.15*re_number**0.687)
 
 
-def make_case(re_number, n, env, levels=0, width=WIDTH, length=LENGTH):
+def make_case(re_number, n, env, levels=0, width=WIDTH, length=LENGTH, duration=30,
+              offset=0.0):
     name = f"sphereDrag_Re{re_number:g}_N{n}"
     if levels:
         name += f"_ref{levels}_box{width}x{length}"
+    if duration != 30 or offset:
+        name += f"_{duration:g}DU_offset{offset:g}"
     case = Case.copy(ROOT / "tutorials" / "cubicBed", RUNS / name, env)
     L, W = length*D, width*D
     (case.path / "system" / "blockMeshDict").write_text(f"""\
@@ -76,7 +87,7 @@ particles
         radius      {D/2!r};
         density     2500;
         motion      fixed;
-        position    ({CENTRE*D!r} {W/2!r} {W/2!r});
+        position    ({CENTRE*D!r} {W/2 + offset*D!r} {W/2 + 2*offset*D!r});
     }}
 }}
 """)
@@ -89,7 +100,7 @@ particles
     control = case.path / "system" / "controlDict"
     text = control.read_text()
     text = text[:text.index("functions")] + "functions {}\n"
-    end = 30*D/U
+    end = duration*D/U
     text = "\n".join(
         f"endTime         {end!r};" if line.startswith("endTime ") else
         f"writeInterval   {end!r};" if line.startswith("writeInterval ") else line
@@ -118,6 +129,8 @@ def main():
     parser.add_argument("--re", default="20,100")
     parser.add_argument("--levels", type=int, default=0)
     parser.add_argument("--box", default=f"{WIDTH},{LENGTH}")
+    parser.add_argument("--duration", type=float, default=30)
+    parser.add_argument("--offset", type=float, default=0.0)
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12])
     args = parser.parse_args()
     width, length = (int(v) for v in args.box.split(","))
@@ -127,25 +140,30 @@ def main():
     for re_number in [float(r) for r in args.re.split(",")]:
         reference = schiller_naumann(re_number)
         for n in args.resolutions:
-            case = make_case(re_number, n, env, args.levels, width, length)
+            case = make_case(re_number, n, env, args.levels, width, length,
+                             args.duration, args.offset)
             seconds = timed_run(case, "pimpleDLMFoam")
             h = case.history()["sphere"]
             t, drag = h[:, 0], h[:, 10]
             window = t >= 0.8*t[-1]
-            cd = drag[window]/(1000*U**2*math.pi*D**2/8)
+            reference_force = 1000*U**2*math.pi*D**2/8
+            cd = drag[window]/reference_force
+            cl = np.hypot(h[window, 11], h[window, 12])/reference_force
             drift = (cd[-1] - cd[0])/cd.mean()
             error = cd.mean()/reference - 1
             if args.levels:
                 merge_row(REFINED_TABLE, REFINED_HEADER,
                           [re_number, n, args.levels, n << args.levels, width, length,
                            cd.mean(), reference, error, drift, seconds, len(t),
-                           last_cell_count(case)],
+                           last_cell_count(case), cl.mean(), np.ptp(cl), args.duration,
+                           args.offset],
                           key_columns=6)
             else:
                 merge_row(TABLE, HEADER, [re_number, n, cd.mean(), reference, error,
                                           drift, seconds, len(t)])
             print(f"Re={re_number:g} N={n:3d} C_D={cd.mean():.4f} Schiller-Naumann "
                   f"{reference:.4f} ({100*error:+.1f}%) drift={100*drift:+.2f}% "
+                  f"C_L={cl.mean():.4f} (range {np.ptp(cl):.4f}) "
                   f"wall={seconds:.0f}s steps={len(t)}", flush=True)
 
 
