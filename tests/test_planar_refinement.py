@@ -266,3 +266,18 @@ def test_in_plane_refinement_following_a_translating_disk_keeps_the_uniform_flow
     parallel.run("reconstructPar", "-latestTime")
     U = parallel.internal_field("0.4/U")
     assert np.abs(U - [SPEED, 0.5*SPEED, 0]).max() < 1e-12*SPEED
+
+
+def test_2d_refinement_held_by_max_cells_is_reported_once_and_the_mesh_stays_valid(
+        tmp_path, foam_env):
+    """With maxCells below what the disk's band needs, the 2D mesh is not
+    refined past it: the log says so once, the run goes on, and the mesh
+    stays a valid one-cell-thick mesh within maxCells."""
+    case = falling_case(tmp_path, foam_env, "capped", end_time=0.05)
+    (case.path / "constant" / "dynamicMeshDict").write_text(
+        REFINE_IN_PLANE.replace("maxCells        100000;", "maxCells        2000;"))
+    log = case.run("pimpleDLMFoam").log
+    assert log.count("above maxCells 2000: nothing is refined") == 1
+    counts = cell_counts(case)
+    assert counts and max(counts) <= 2000
+    assert plane_faces(case, "0.05") == 2*case.internal_field("0.05/alpha.solid").size
