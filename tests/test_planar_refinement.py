@@ -39,14 +39,15 @@ dynamicRefineFvMeshCoeffs
 def falling_case(tmp_path, foam_env, name, end_time=0.15):
     """tutorials/fallingDisk (mu 0.1 Pa s, Re about 100) on a coarse base mesh
     of 3 cells per diameter, refined to 12 at the disk's surface, the disk
-    off the channel's axis so that its path is not on a symmetry line."""
+    off the channel's axis (by 0.05 d) so that its path is not on a
+    symmetry line."""
     case = Case.copy(DISK, tmp_path / name, foam_env)
     mesh = case.path / "system" / "blockMeshDict"
     mesh.write_text(mesh.read_text().replace("nx  80;", "nx  30;")
                     .replace("ny  160;", "ny  60;"))
     properties = case.path / "constant" / "particleProperties"
     properties.write_text(properties.read_text().replace(
-        "position    (0.1 0.3 0);", "position    (0.09 0.3 0);"))
+        "position    (0.1 0.3 0);", "position    (0.099 0.3 0);"))
     (case.path / "constant" / "dynamicMeshDict").write_text(REFINE_IN_PLANE)
     solution = case.path / "system" / "fvSolution"
     solution.write_text(solution.read_text().replace(
@@ -120,7 +121,8 @@ def test_a_refined_2d_run_restarts_exactly_and_runs_on_two_and_three_ranks_as_in
     again), the run continues as if never stopped, to 1e-12. Decomposed
     (METIS) on 2 and 3 ranks (oversubscribed), the mesh follows the disk
     with the cells of the serial run and, with converged linear solvers,
-    the same trajectory to 1e-6."""
+    the same trajectory to 1e-6; so does a decomposition whose processor
+    boundary runs through the disk."""
     serial = falling_case(tmp_path, foam_env, "serial", end_time=0.1)
     serial.run("pimpleDLMFoam")
     track = serial.history()["disk"]
@@ -139,14 +141,22 @@ def test_a_refined_2d_run_restarts_exactly_and_runs_on_two_and_three_ranks_as_in
     converged = falling_case(tmp_path, foam_env, "converged", end_time=0.1)
     converged.converge_linear_solvers()
     converged.run("pimpleDLMFoam")
-    for ranks in [2, 3]:
-        parallel = falling_case(tmp_path, foam_env, f"parallel{ranks}", end_time=0.1)
+    for ranks, method in [(2, "metis"), (3, "metis"), (2, "simple")]:
+        parallel = falling_case(tmp_path, foam_env, f"parallel{ranks}{method}",
+                                end_time=0.1)
         parallel.converge_linear_solvers()
         parallel.set("system/decomposeParDict", "numberOfSubdomains", ranks)
+        parallel.set("system/decomposeParDict", "method", method)
+        # simple: the processors' boundary at x = 0.1, through the disk
+        parallel.set("system/decomposeParDict", "coeffs", "{ n (2 1 1); }")
         parallel.run("decomposePar")
         parallel.run("pimpleDLMFoam", np=ranks)
         assert cell_counts(parallel) == cell_counts(converged)
         assert_same_trajectory(converged.history()["disk"], parallel.history()["disk"])
+        if method == "simple":
+            solid = [parallel.internal_field(f"processor{k}/0.1/alpha.solid").max()
+                     for k in range(ranks)]
+            assert min(solid) > 0.1
 
 
 def test_a_refined_2d_time_decomposes_continues_on_two_ranks_and_reconstructs(
