@@ -151,7 +151,8 @@ def stored_rows(path):
 
 def merge_row(path, header, row, key_columns=2, sort_key=None):
     """Put row into a results CSV, replacing the row with the same first
-    key_columns values (the case and resolution), rows sorted; older rows
+    key_columns values (the case and resolution; or the values of the
+    columns a list of indices names), rows sorted; older rows
     without the header's last columns get nan there. A stored header that
     is not the start of this one (columns renamed or inserted, say by a
     newer version of the script) is an error: merging would shift the
@@ -168,8 +169,14 @@ def merge_row(path, header, row, key_columns=2, sort_key=None):
                     f" ({','.join(header)}): the row is not written ({row}); update"
                     " the file's rows to the new columns, or run the script's"
                     " current version")
-        rows = [r + [float("nan")]*(len(header) - len(r)) for r in stored_rows(path)
-                if r[:key_columns] != row[:key_columns]]
+        if isinstance(key_columns, int):
+            key_columns = range(key_columns)
+
+        def key(r):
+            return [r[i] for i in key_columns]
+
+        rows = [r + [float("nan")]*(len(header) - len(r)) for r in stored_rows(path)]
+        rows = [r for r in rows if key(r) != key(row)]
         rows.append(row)
         rows.sort(key=sort_key)
         write_table(path, header, rows)

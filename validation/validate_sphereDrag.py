@@ -22,10 +22,12 @@ Re 210 the wake leaves the axis (Johnson & Patel 1999: steady and oblique
 up to about 270, then shedding; at Re 300 mean C_D 0.656, C_L 0.069).
 --duration sets the run's length in D/U (30), --offset moves the sphere
 off the mesh's symmetry by (0, 1, 2) times that many diameters, so that
-the wake's symmetry breaks at once rather than when round-off has grown.
+the wake's symmetry breaks at once rather than when round-off has grown;
+--upstream sets the sphere's distance behind the inlet in diameters (4).
 
     validation/validate_sphereDrag.py [--re 20,100] [--levels L] [--box 6,12]
-                                      [--duration 30] [--offset 0] [N ...]
+                                      [--duration 30] [--offset 0]
+                                      [--upstream 4] [N ...]
                                       (default N = 8 12)
 """
 
@@ -45,7 +47,7 @@ REFINED_TABLE = RESULTS / "sphereDrag_refined.csv"
 REFINED_HEADER = ["Re", "baseCellsPerDiameter", "levels", "surfaceCellsPerDiameter",
                   "widthD", "lengthD", "CD", "CD_SchillerNaumann", "relError", "drift",
                   "wallTime_s", "steps", "lastCells", "CL", "CLrange", "durationDU",
-                  "offsetD"]
+                  "offsetD", "upstreamD"]
 D, U = 0.004, 0.5
 LENGTH, WIDTH, CENTRE = 12, 6, 4       # in diameters
 
@@ -54,12 +56,14 @@ def schiller_naumann(re_number):
 
 
 def make_case(re_number, n, env, levels=0, width=WIDTH, length=LENGTH, duration=30,
-              offset=0.0):
+              offset=0.0, upstream=CENTRE):
     name = f"sphereDrag_Re{re_number:g}_N{n}"
     if levels:
         name += f"_ref{levels}_box{width}x{length}"
     if duration != 30 or offset:
         name += f"_{duration:g}DU_offset{offset:g}"
+    if upstream != CENTRE:
+        name += f"_upstream{upstream:g}"
     case = Case.copy(ROOT / "tutorials" / "cubicBed", RUNS / name, env)
     L, W = length*D, width*D
     (case.path / "system" / "blockMeshDict").write_text(f"""\
@@ -87,7 +91,7 @@ particles
         radius      {D/2!r};
         density     2500;
         motion      fixed;
-        position    ({CENTRE*D!r} {W/2 + offset*D!r} {W/2 + 2*offset*D!r});
+        position    ({upstream*D!r} {W/2 + offset*D!r} {W/2 + 2*offset*D!r});
     }}
 }}
 """)
@@ -131,6 +135,7 @@ def main():
     parser.add_argument("--box", default=f"{WIDTH},{LENGTH}")
     parser.add_argument("--duration", type=float, default=30)
     parser.add_argument("--offset", type=float, default=0.0)
+    parser.add_argument("--upstream", type=float, default=CENTRE)
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12])
     args = parser.parse_args()
     width, length = (int(v) for v in args.box.split(","))
@@ -141,7 +146,7 @@ def main():
         reference = schiller_naumann(re_number)
         for n in args.resolutions:
             case = make_case(re_number, n, env, args.levels, width, length,
-                             args.duration, args.offset)
+                             args.duration, args.offset, args.upstream)
             seconds = timed_run(case, "pimpleDLMFoam")
             h = case.history()["sphere"]
             t, drag = h[:, 0], h[:, 10]
@@ -156,8 +161,8 @@ def main():
                           [re_number, n, args.levels, n << args.levels, width, length,
                            cd.mean(), reference, error, drift, seconds, len(t),
                            last_cell_count(case), cl.mean(), np.ptp(cl), args.duration,
-                           args.offset],
-                          key_columns=6)
+                           args.offset, args.upstream],
+                          key_columns=[0, 1, 2, 3, 4, 5, 15, 16, 17])
             else:
                 merge_row(TABLE, HEADER, [re_number, n, cd.mean(), reference, error,
                                           drift, seconds, len(t)])
