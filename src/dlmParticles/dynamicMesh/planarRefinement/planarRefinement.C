@@ -24,12 +24,9 @@ namespace Foam
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-const Foam::point& Foam::planarRefinement::pointPosition
-(
-    const label pointi
-) const
+bool Foam::planarRefinement::front(const label pointi) const
 {
-    return mesh_.points()[pointi];
+    return mesh_.points()[pointi][normal_] < midPlane_;
 }
 
 
