@@ -16,7 +16,7 @@ of their lateral positions (in diameters: at Re 2000 the disk, released on
 the channel's axis, leaves it when round-off has grown into its wake's
 instability, at a time no two runs share); the solver's wall time (its
 log's ClockTime, rendering apart) and the speed-up. Rows go to
-results/fallingDisk.csv (a rerun replaces its row); results/fallingDisk.png
+results/fallingDisk.csv (a rerun replaces its row); results/fallingDisk_N<N>.png
 shows the settling velocity and the lateral position against time, uniform
 and refined. --report-only measures the runs found under validation/runs.
 
@@ -133,7 +133,7 @@ def main():
     fig.suptitle(f"Falling disk: uniform {n} cells per diameter against a base of"
                  f" {n >> levels} refined {levels} levels at the disk", fontsize=9)
     fig.tight_layout()
-    fig.savefig(RESULTS / "fallingDisk.png", dpi=120)
+    fig.savefig(RESULTS / f"fallingDisk_N{n}.png", dpi=120)
     print(f"{len(stored_rows(TABLE))} rows in {TABLE}")
 
 
