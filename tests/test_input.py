@@ -367,6 +367,18 @@ def test_plain_flow_at_rest(meshed, tmp_path):
     assert max(iterations) == 0, log[-2000:]
 
 
+@pytest.mark.parametrize("position", ["0.015 0.015 0.025", "0.0155 0.0145 0.0212"])
+def test_a_sphere_of_exactly_two_cells_per_diameter_is_accepted(meshed, tmp_path, position):
+    """The smallest diameter the projection takes, 2 cells (of 1/600 m),
+    in cells whose span differs from 1/600 m by round-off: both were
+    refused as "a diameter of 2 cells; needs at least 2"."""
+    case = copy(meshed, tmp_path)
+    particles(f"sphere {{ shape sphere; radius {0.03/18!r}; density 2000;"
+              f" position ({position}); }}")(case)
+    case.set(CONTROL, "endTime", 0.005)
+    assert case.run("pimpleDLMFoam").log.rstrip().endswith("End")
+
+
 SECOND = "second { shape sphere; radius 0.004; density 2000; position (0.015 0.015 0.04); }"
 
 

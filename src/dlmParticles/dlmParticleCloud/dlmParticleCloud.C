@@ -592,13 +592,16 @@ void Foam::dlmParticleCloud::checkStart() const
     }
 
     // The projection needs a cell centre inside each particle wherever it
-    // is: a diameter of two cells has one
+    // is: a diameter of two cells has one. A cell's span, a difference of
+    // its points, may exceed its nominal size by round-off (a diameter of
+    // exactly two cells was refused in some cells)
     const scalar minCellsPerDiameter = 2;
+    const scalar roundOff = 1e-9;
     const bool wet = rhoFluid_.value() > 0;
     for (label i = 0; wet && i < nParticles_; ++i)
     {
         const scalar nCells = cellsPerDiameter(i);
-        if (nCells < minCellsPerDiameter)
+        if (nCells < (1 - roundOff)*minCellsPerDiameter)
         {
             const dlmParticle& p = particles_[i];
             FatalErrorInFunction

@@ -43,9 +43,9 @@ Foam::dictionary Foam::dlmRefineFvMesh::refineCoeffs() const
 }
 
 
-void Foam::dlmRefineFvMesh::warnAtMaxCells()
+void Foam::dlmRefineFvMesh::warnAtMaxCells(const dictionary& coeffs)
 {
-    const label maxCells = refineCoeffs().get<label>("maxCells");
+    const label maxCells = coeffs.get<label>("maxCells");
 
     const label nCells = globalData().nTotalCells();
     if (nCells >= maxCells && !atMaxCells_)
@@ -560,6 +560,14 @@ Foam::dlmRefineFvMesh::dlmRefineFvMesh(const IOobject& io)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+bool Foam::dlmRefineFvMesh::changeDue() const
+{
+    const label refineInterval =
+        refineCoeffs().getOrDefault<label>("refineInterval", 0);
+    return refineInterval > 0 && time().timeIndex() % refineInterval == 0;
+}
+
+
 bool Foam::dlmRefineFvMesh::update()
 {
     const dictionary coeffs(refineCoeffs());
@@ -567,14 +575,14 @@ bool Foam::dlmRefineFvMesh::update()
     if (targets_.size())
     {
         const bool changed = updateToTargets(coeffs);
-        warnAtMaxCells();
+        warnAtMaxCells(coeffs);
         return changed;
     }
 
     if (time().timeIndex() > 0)
     {
         const bool changed = dynamicRefineFvMesh::update();
-        warnAtMaxCells();
+        warnAtMaxCells(coeffs);
         return changed;
     }
 
@@ -611,7 +619,7 @@ bool Foam::dlmRefineFvMesh::update()
     }
 
     topoChanging(changed);
-    warnAtMaxCells();
+    warnAtMaxCells(coeffs);
     return changed;
 }
 
