@@ -291,3 +291,78 @@ def test_2d_refinement_held_by_max_cells_is_reported_once_and_the_mesh_stays_val
     counts = cell_counts(case)
     assert counts and max(counts) <= 2000
     assert plane_faces(case, "0.05") == 2*case.internal_field("0.05/alpha.solid").size
+
+
+def test_split_cells_take_their_parents_linear_variation(tmp_path, foam_env):
+    """A shear flow v = S (x - x0) between slip walls (periodic along y),
+    refined at the start to 2 levels in a band of 8 fine cells about a
+    fixed disk, then one step of 1e-8 s, which leaves the flow as the
+    refinement made it. A split cell's children take its value corrected
+    by its gradient at their centres: in the band's level-2 cells beyond the
+    disk's forced cells (2 fine cells) and within 6, whose level-1 parents
+    lay among level-1 cells, the velocity is the linear field's to 1e-5 of
+    S h (1e-6 measured); a child given its parent's value (injection)
+    would be off by h/8 to 3h/8."""
+    h, x0, shear = 0.04/16, 0.02, 1.0
+    centre, radius = np.array([0.0201, 0.0198]), 0.005
+    case = Case.copy(DISK, tmp_path / "shear", foam_env)
+    (case.path / "system" / "blockMeshDict").write_text("""\
+FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+vertices ((0 0 0) (0.04 0 0) (0.04 0.04 0) (0 0.04 0)
+          (0 0 0.01) (0.04 0 0.01) (0.04 0.04 0.01) (0 0.04 0.01));
+blocks (hex (0 1 2 3 4 5 6 7) (16 16 1) simpleGrading (1 1 1));
+boundary
+(
+    left   { type wall; faces ((0 4 7 3)); }
+    right  { type wall; faces ((1 2 6 5)); }
+    bottom { type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }
+    top    { type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
+);
+""")
+    (case.path / "constant" / "particleProperties").write_text(f"""\
+FoamFile {{ version 2.0; format ascii; class dictionary; object particleProperties; }}
+particles
+{{
+    disk
+    {{
+        shape disk; radius {radius!r}; density 1000; motion fixed;
+        position ({float(centre[0])!r} {float(centre[1])!r} 0);
+    }}
+}}
+""")
+    centres = (np.arange(16) + 0.5)*h
+    values = "\n".join(f"(0 {float(shear*(x - x0))!r} 0)" for _ in centres for x in centres)
+    for field, walls in [("U", "slip"), ("p_rgh", "fixedFluxPressure")]:
+        path = case.path / "0" / field
+        text = path.read_text()
+        text = text.replace("uniform (0 0 0)", f"nonuniform List<vector> 256\n(\n{values}\n)")
+        path.write_text(text[:text.index("boundaryField")] + f"""boundaryField
+{{
+    "(left|right)" {{ type {walls}; }}
+    "(bottom|top)" {{ type cyclic; }}
+    frontAndBack {{ type empty; }}
+}}
+""")
+    (case.path / "constant" / "g").write_text(
+        "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }\n"
+        "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 0);\n")
+    (case.path / "constant" / "dynamicMeshDict").write_text(REFINE_IN_PLANE.replace(
+        "type particleSurface; level 2;", "type particleSurface; level 2; cells 8;"))
+    case.set("system/fvSolution", "PIMPLE/pRefPoint", "(0.001 0.001 0.005)")
+    for entry, value in {"adjustTimeStep": "no", "deltaT": 1e-8, "endTime": 1e-8,
+                         "writeControl": "timeStep", "writeInterval": 1,
+                         "writePrecision": 17}.items():
+        case.set("system/controlDict", entry, value)
+    case.run("blockMesh")
+    case.run("pimpleDLMFoam")
+    time = case.times()[-1]
+    case.run("postProcess", "-func", "writeCellCentres", "-time", time)
+    C = case.internal_field(f"{time}/C")[:, :2]
+    U = case.internal_field(f"{time}/U")
+    level = case.internal_field(f"{time}/cellLevel")
+    distance = np.linalg.norm(C - centre, axis=1) - radius
+    band = (level == 2) & (distance > 2*h/4) & (distance < 6*h/4)
+    assert band.sum() > 300
+    error = np.abs(U[band] - np.column_stack([0*C[band, 0], shear*(C[band, 0] - x0), 0*C[band, 0]]))
+    assert error.max() < 1e-5*shear*h
