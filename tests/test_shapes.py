@@ -11,6 +11,7 @@ Stokes flow."""
 
 import pathlib
 import re
+import shutil
 import subprocess
 
 import numpy as np
@@ -945,3 +946,35 @@ def test_dry_pile_of_mixed_shapes_comes_to_rest_without_gaining_energy(tmp_path,
     for name, h in history.items():
         assert np.linalg.norm(h[late, 4:7], axis=1).max() < 2e-4, name
         assert np.linalg.norm(h[late, 7:10], axis=1).max() < 0.2, name
+
+
+def test_dry_pile_restarted_during_deep_landings_continues_as_never_stopped(
+        tmp_path, foam_env):
+    """The mixedPile tutorial's shapes falling dry (dlmDEMFoam), restarted
+    from 0.03 s, when a brick lands on the floor 7 % of its thickness deep
+    (above maxStartOverlap, the limit for a fresh start's input, which a
+    restart refused): the restarted run continues the full one's
+    trajectories to round-off."""
+    tutorial = pathlib.Path(__file__).parents[1] / "tutorials" / "mixedPile"
+
+    def make(name):
+        case = Case.copy(tutorial, tmp_path / name, foam_env)
+        for entry, value in {"application": "dlmDEMFoam", "endTime": 0.04,
+                             "writeInterval": 0.03, "writePrecision": 17}.items():
+            case.set("system/controlDict", entry, value)
+        case.run("blockMesh")
+        case.run("dlmPackParticles")
+        return case
+
+    full = make("full")
+    full.run("dlmDEMFoam")
+    restarted = make("restarted")
+    shutil.copytree(full.path / "0.03", restarted.path / "0.03")
+    log = restarted.run("dlmDEMFoam").log
+    assert "Reading particle state from" in log
+    a, b = full.history(), restarted.history("0.03")
+    assert sorted(a) == sorted(b) and len(a) == 24
+    for name in a:
+        tail = a[name][a[name][:, 0] > 0.03 + 1e-9]
+        assert len(b[name]) == len(tail) > 0
+        assert np.abs(b[name][:, 1:10] - tail[:, 1:10]).max() < 1e-9*np.abs(tail[:, 1:10]).max()
