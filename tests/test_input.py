@@ -72,6 +72,15 @@ def remove(file):
     return lambda case: (case.path / file).unlink()
 
 
+def start_at(time):
+    """The initial fields moved from 0 to the given time, started from."""
+    def edit(case):
+        (case.path / "0").rename(case.path / time)
+        case.set(CONTROL, "startFrom", "startTime")
+        case.set(CONTROL, "startTime", time)
+    return edit
+
+
 def replace(file, old, new):
     def edit(case):
         path = case.path / file
@@ -269,6 +278,15 @@ BAD_INPUT = [
         "maxCo 0 must be positive with adjustTimeStep yes", "controlDict"),
     bad("deltaT zero, dry", setting(CONTROL, "deltaT", 0),
         "deltaT 0 must be positive", "controlDict", solver="dlmDEMFoam"),
+    bad("deltaT below the time's round-off",
+        (start_at("1000"), setting(CONTROL, "endTime", 1001), setting(CONTROL, "deltaT", 1e-14),
+         setting(CONTROL, "adjustTimeStep", "no")),
+        "The time step 1e-14 s at time 1000 s is below the time's round-off", "cannot advance",
+        "controlDict"),
+    bad("deltaT below the time's round-off, dry",
+        (start_at("1000"), setting(CONTROL, "endTime", 1001), setting(CONTROL, "deltaT", 1e-14),
+         setting(CONTROL, "adjustTimeStep", "no")),
+        "is below the time's round-off", "cannot advance", "controlDict", solver="dlmDEMFoam"),
 
     # Contacts
     bad("contact pairs empty", contact("pairs { }"),
