@@ -23,11 +23,16 @@ up to about 270, then shedding; at Re 300 mean C_D 0.656, C_L 0.069).
 --duration sets the run's length in D/U (30), --offset moves the sphere
 off the mesh's symmetry by (0, 1, 2) times that many diameters, so that
 the wake's symmetry breaks at once rather than when round-off has grown;
---upstream sets the sphere's distance behind the inlet in diameters (4).
+--upstream sets the sphere's distance behind the inlet in diameters (4);
+--near K adds a band of K level-1 cells about the sphere (particleSurface at
+level 1), so that the potential flow about it is not left to the base;
+--convection sets the velocity's convection scheme (CONVECTION: the
+tutorials' limitedLinearV 1, LUST, linear), to see what it does to a wake.
 
     validation/validate_sphereDrag.py [--re 20,100] [--levels L] [--box 6,12]
                                       [--duration 30] [--offset 0]
-                                      [--upstream 4] [N ...]
+                                      [--upstream 4] [--near 0]
+                                      [--convection limitedLinearV] [N ...]
                                       (default N = 8 12)
 """
 
@@ -47,16 +52,19 @@ REFINED_TABLE = RESULTS / "sphereDrag_refined.csv"
 REFINED_HEADER = ["Re", "baseCellsPerDiameter", "levels", "surfaceCellsPerDiameter",
                   "widthD", "lengthD", "CD", "CD_SchillerNaumann", "relError", "drift",
                   "wallTime_s", "steps", "lastCells", "CL", "CLrange", "durationDU",
-                  "offsetD", "upstreamD"]
+                  "offsetD", "upstreamD", "nearCells", "convection"]
 D, U = 0.004, 0.5
 LENGTH, WIDTH, CENTRE = 12, 6, 4       # in diameters
+CONVECTION = {"limitedLinearV": "Gauss limitedLinearV 1",
+              "LUST": "Gauss LUST grad(U)",
+              "linear": "Gauss linear"}
 
 def schiller_naumann(re_number):
     return 24/re_number*(1 + 0.15*re_number**0.687)
 
 
 def make_case(re_number, n, env, levels=0, width=WIDTH, length=LENGTH, duration=30,
-              offset=0.0, upstream=CENTRE):
+              offset=0.0, upstream=CENTRE, near=0, convection="limitedLinearV"):
     name = f"sphereDrag_Re{re_number:g}_N{n}"
     if levels:
         name += f"_ref{levels}_box{width}x{length}"
@@ -64,6 +72,10 @@ def make_case(re_number, n, env, levels=0, width=WIDTH, length=LENGTH, duration=
         name += f"_{duration:g}DU_offset{offset:g}"
     if upstream != CENTRE:
         name += f"_upstream{upstream:g}"
+    if near:
+        name += f"_near{near:g}"
+    if convection != "limitedLinearV":
+        name += f"_{convection}"
     case = Case.copy(ROOT / "tutorials" / "cubicBed", RUNS / name, env)
     L, W = length*D, width*D
     (case.path / "system" / "blockMeshDict").write_text(f"""\
@@ -110,13 +122,17 @@ particles
         f"writeInterval   {end!r};" if line.startswith("writeInterval ") else line
         for line in text.splitlines()) + "\n"
     control.write_text(text)
+    case.run("foamDictionary", "system/fvSchemes", "-entry", "divSchemes/div(phi,U)",
+             "-set", CONVECTION[convection], log="foamDictionary")
     if levels:
         (case.path / "constant" / "dynamicMeshDict").write_text(refinement_dict(
             f"        surface  {{ type particleSurface; level {levels}; }}\n"
             f"        nearWake {{ type vorticity; level {max(levels - 1, 1)};"
             " threshold 0.2; }\n"
             f"        farWake  {{ type vorticity; level {max(levels - 2, 1)};"
-            " threshold 0.05; }"))
+            " threshold 0.05; }"
+            + (f"\n        nearField {{ type particleSurface; level 1; cells {near:g}; }}"
+               if near else "")))
     case.run("blockMesh")
     return case
 
@@ -136,8 +152,16 @@ def main():
     parser.add_argument("--duration", type=float, default=30)
     parser.add_argument("--offset", type=float, default=0.0)
     parser.add_argument("--upstream", type=float, default=CENTRE)
+    parser.add_argument("--near", type=float, default=0)
+    parser.add_argument("--convection", choices=CONVECTION, default="limitedLinearV")
     parser.add_argument("resolutions", nargs="*", type=int, default=[8, 12])
     args = parser.parse_args()
+    options = {"--box": args.box != f"{WIDTH},{LENGTH}", "--duration": args.duration != 30,
+               "--offset": args.offset != 0, "--upstream": args.upstream != CENTRE,
+               "--near": args.near != 0, "--convection": args.convection != "limitedLinearV"}
+    if not args.levels and any(options.values()):
+        parser.error(", ".join(k for k, v in options.items() if v) + " go with --levels"
+                     " (results/sphereDrag.csv, of the uniform meshes, has no column for them)")
     width, length = (int(v) for v in args.box.split(","))
 
     env = foam_environment()
@@ -146,7 +170,8 @@ def main():
         reference = schiller_naumann(re_number)
         for n in args.resolutions:
             case = make_case(re_number, n, env, args.levels, width, length,
-                             args.duration, args.offset, args.upstream)
+                             args.duration, args.offset, args.upstream, args.near,
+                             args.convection)
             seconds = timed_run(case, "pimpleDLMFoam")
             h = case.history()["sphere"]
             t, drag = h[:, 0], h[:, 10]
@@ -161,8 +186,8 @@ def main():
                           [re_number, n, args.levels, n << args.levels, width, length,
                            cd.mean(), reference, error, drift, seconds, len(t),
                            last_cell_count(case), cl.mean(), np.ptp(cl), args.duration,
-                           args.offset, args.upstream],
-                          key_columns=[0, 1, 2, 3, 4, 5, 15, 16, 17])
+                           args.offset, args.upstream, args.near, args.convection],
+                          key_columns=[0, 1, 2, 3, 4, 5, 15, 16, 17, 18, 19])
             else:
                 merge_row(TABLE, HEADER, [re_number, n, cd.mean(), reference, error,
                                           drift, seconds, len(t)])
