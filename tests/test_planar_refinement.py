@@ -180,26 +180,43 @@ def test_a_refined_2d_time_decomposes_continues_on_two_ranks_and_reconstructs(
     assert "Mesh OK." in check.log
 
 
-def translating_disk_case(tmp_path, foam_env, name="translating"):
-    """A 2D periodic box (4 cm square, 16 x 16 cells) holding a disk of 1 cm
-    radius across its periodic sides x = 0 and 4 cm, prescribed to move at
-    (1, 0.5) cm/s through water moving with it: the exact solution is the
-    uniform flow."""
+def disk_box_case(tmp_path, foam_env, name, periodic_sides):
+    """tutorials/fallingDisk turned into a 4 cm square box of 16 x 16 cells,
+    periodic along y, along x too or between walls at x = 0 and 4 cm,
+    without gravity, refined in the plane (REFINE_IN_PLANE)."""
     case = Case.copy(DISK, tmp_path / name, foam_env)
-    (case.path / "system" / "blockMeshDict").write_text("""\
-FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+    sides = ("left   { type cyclic; neighbourPatch right; faces ((0 4 7 3)); }\n"
+             "    right  { type cyclic; neighbourPatch left;  faces ((1 2 6 5)); }"
+             if periodic_sides else
+             "left   { type wall; faces ((0 4 7 3)); }\n"
+             "    right  { type wall; faces ((1 2 6 5)); }")
+    (case.path / "system" / "blockMeshDict").write_text(f"""\
+FoamFile {{ version 2.0; format ascii; class dictionary; object blockMeshDict; }}
 vertices ((0 0 0) (0.04 0 0) (0.04 0.04 0) (0 0.04 0)
           (0 0 0.01) (0.04 0 0.01) (0.04 0.04 0.01) (0 0.04 0.01));
 blocks (hex (0 1 2 3 4 5 6 7) (16 16 1) simpleGrading (1 1 1));
 boundary
 (
-    left   { type cyclic; neighbourPatch right; faces ((0 4 7 3)); }
-    right  { type cyclic; neighbourPatch left;  faces ((1 2 6 5)); }
-    bottom { type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }
-    top    { type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }
-    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
+    {sides}
+    bottom {{ type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }}
+    top    {{ type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }}
+    frontAndBack {{ type empty; faces ((0 3 2 1) (4 5 6 7)); }}
 );
 """)
+    (case.path / "constant" / "g").write_text(
+        "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }\n"
+        "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 0);\n")
+    (case.path / "constant" / "dynamicMeshDict").write_text(REFINE_IN_PLANE)
+    case.set("system/fvSolution", "PIMPLE/pRefPoint", "(0.001 0.001 0.005)")
+    return case
+
+
+def translating_disk_case(tmp_path, foam_env, name="translating"):
+    """A 2D periodic box (4 cm square, 16 x 16 cells) holding a disk of 1 cm
+    radius across its periodic sides x = 0 and 4 cm, prescribed to move at
+    (1, 0.5) cm/s through water moving with it: the exact solution is the
+    uniform flow."""
+    case = disk_box_case(tmp_path, foam_env, name, periodic_sides=True)
     velocity = f"({SPEED!r} {0.5*SPEED!r} 0)"
     (case.path / "constant" / "particleProperties").write_text(f"""\
 FoamFile {{ version 2.0; format ascii; class dictionary; object particleProperties; }}
@@ -226,11 +243,6 @@ particles
 }
 """
         path.write_text(text)
-    (case.path / "constant" / "g").write_text(
-        "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }\n"
-        "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 0);\n")
-    (case.path / "constant" / "dynamicMeshDict").write_text(REFINE_IN_PLANE)
-    case.set("system/fvSolution", "PIMPLE/pRefPoint", "(0.001 0.001 0.005)")
     case.set("constant/transportProperties", "nu", 1e-6)
     for entry, value in {"adjustTimeStep": "no", "deltaT": 0.02, "endTime": 0.4,
                          "writeInterval": 0.1, "writePrecision": 17}.items():
@@ -305,21 +317,7 @@ def test_split_cells_take_their_parents_linear_variation(tmp_path, foam_env):
     would be off by h/8 to 3h/8."""
     h, x0, shear = 0.04/16, 0.02, 1.0
     centre, radius = np.array([0.0201, 0.0198]), 0.005
-    case = Case.copy(DISK, tmp_path / "shear", foam_env)
-    (case.path / "system" / "blockMeshDict").write_text("""\
-FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
-vertices ((0 0 0) (0.04 0 0) (0.04 0.04 0) (0 0.04 0)
-          (0 0 0.01) (0.04 0 0.01) (0.04 0.04 0.01) (0 0.04 0.01));
-blocks (hex (0 1 2 3 4 5 6 7) (16 16 1) simpleGrading (1 1 1));
-boundary
-(
-    left   { type wall; faces ((0 4 7 3)); }
-    right  { type wall; faces ((1 2 6 5)); }
-    bottom { type cyclic; neighbourPatch top;   faces ((0 1 5 4)); }
-    top    { type cyclic; neighbourPatch bottom; faces ((3 7 6 2)); }
-    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
-);
-""")
+    case = disk_box_case(tmp_path, foam_env, "shear", periodic_sides=False)
     (case.path / "constant" / "particleProperties").write_text(f"""\
 FoamFile {{ version 2.0; format ascii; class dictionary; object particleProperties; }}
 particles
@@ -344,12 +342,7 @@ particles
     frontAndBack {{ type empty; }}
 }}
 """)
-    (case.path / "constant" / "g").write_text(
-        "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }\n"
-        "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 0);\n")
-    (case.path / "constant" / "dynamicMeshDict").write_text(REFINE_IN_PLANE.replace(
-        "type particleSurface; level 2;", "type particleSurface; level 2; cells 8;"))
-    case.set("system/fvSolution", "PIMPLE/pRefPoint", "(0.001 0.001 0.005)")
+    case.set("constant/dynamicMeshDict", "dynamicRefineFvMeshCoeffs/targets/surface/cells", 8)
     for entry, value in {"adjustTimeStep": "no", "deltaT": 1e-8, "endTime": 1e-8,
                          "writeControl": "timeStep", "writeInterval": 1,
                          "writePrecision": 17}.items():
