@@ -125,7 +125,13 @@ Foam::dlmParticle::dlmParticle(const dictionary& dict)
         angularVelocity0_ = Zero;
     }
 
-    orientation_.normalize();
+    // A written state's quaternion is unit to round-off: normalising it
+    // again would change its last bits, and a restart would not continue
+    // with the orientation the run had
+    if (mag(mag(orientation_) - 1) > 1e-14)
+    {
+        orientation_.normalize();
+    }
 }
 
 

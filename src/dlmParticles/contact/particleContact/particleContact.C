@@ -1157,7 +1157,9 @@ Foam::particleContact::particleContact
     readLaws();
     overlap_ = overlapMethod::New(dict, cloud, pairParticles());
 
-    // Tangential history of a restarted run
+    // A restarted run's last sub-step (the corrections of the first
+    // evaluation take it) and tangential history
+    state.readIfPresent("lastContactSubStep", lastSubStep_);
     if (state.found("contacts"))
     {
         const List<Tuple2<contactKey, vector>> saved
@@ -1511,6 +1513,7 @@ void Foam::particleContact::write(Ostream& os) const
         saved[k++] = Tuple2<contactKey, vector>(key, history_[key].first());
     }
     os.writeEntry("contacts", saved);
+    os.writeEntry("lastContactSubStep", lastSubStep_);
 }
 
 
