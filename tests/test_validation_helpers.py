@@ -293,6 +293,21 @@ def test_a_chute_shorter_than_a_pebble_is_refused():
     assert "--chute-length 0.5: the chute must be at least a pebble diameter long" in result.stderr
 
 
+@pytest.mark.parametrize("option", [["--box", "8,16"], ["--duration", "20"], ["--offset", "0.01"],
+                                    ["--upstream", "6"], ["--near", "8"],
+                                    ["--convection", "LUST"]])
+def test_sphere_drag_options_of_the_refined_table_need_levels(option):
+    """The uniform table (results/sphereDrag.csv) has no column for the
+    refined runs' box, inlet, near band or scheme: without --levels these
+    options are refused before any case is made, so that rows of different
+    set-ups are not mixed up."""
+    script = pathlib.Path(__file__).parents[1] / "validation" / "validate_sphereDrag.py"
+    result = subprocess.run([sys.executable, str(script), *option, "8"],
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode == 2
+    assert f"{option[0]} go with --levels" in result.stderr
+
+
 def test_ten_cate_plots_take_every_stored_run_of_the_case_and_step(tmp_path, monkeypatch):
     """validate_tenCate's plots gather the runs of a case at one step factor
     from the runs directory, by resolution, whichever call ran them; runs of
