@@ -919,18 +919,21 @@ def test_box_spun_on_the_floor_stops_under_twisting_friction(tmp_path, foam_env,
 def test_dry_pile_of_mixed_shapes_comes_to_rest_without_gaining_energy(tmp_path, foam_env):
     """The mixedPile tutorial's 24 shapes (the same packing) falling dry,
     without the water (dlmDEMFoam; friction 0.3, rolling friction 0.05):
-    they pile and come to rest by 0.22 s. From one step to the next the
-    particles' kinetic and potential energy never rises by more than 0.2 %
-    of what the pile has lost (0.05 % measured: the contacts' stored energy
-    coming back), and over 0.22 to 0.25 s no centroid moves faster than
-    0.2 mm/s (0.07 measured) nor turns faster than 0.2 rad/s (0.05). A box
-    face lying in the common plane of a contact had its part's centroid
-    put kilometres away by round-off: a cylinder on it spun up to
-    700 rad/s, or the run stopped at 0.06 s with a body turning by a
-    radian in a sub-step."""
+    they pile and come to rest. From one step to the next the particles'
+    kinetic and potential energy never rises by more than 0.2 % of what
+    the pile has lost (0.05 % measured: the contacts' stored energy coming
+    back), and over 0.45 to 0.5 s no centroid moves faster than 0.2 mm/s
+    (0.07 measured) nor turns faster than 0.2 rad/s (0.07). When the last
+    body stops is one realisation's: a cylinder rolled on until 0.22, 0.24
+    or 0.28 s as the contacts' normals changed by 1e-12. A box face lying
+    in the common plane of a contact had its part's centroid put
+    kilometres away by round-off: a cylinder on it spun up to 700 rad/s,
+    or the run stopped at 0.06 s with a body turning by a radian in a
+    sub-step. At rest a step took up to 46 s of CPU while the search for
+    a contact's normal zigzagged across a box's edge (now about 0.15 s)."""
     tutorial = pathlib.Path(__file__).parents[1] / "tutorials" / "mixedPile"
     case = Case.copy(tutorial, tmp_path / "dryPile", foam_env)
-    for entry, value in {"application": "dlmDEMFoam", "endTime": 0.25,
+    for entry, value in {"application": "dlmDEMFoam", "endTime": 0.5,
                          "writeInterval": 100000}.items():
         case.set("system/controlDict", entry, value)
     case.run("blockMesh")
@@ -942,7 +945,7 @@ def test_dry_pile_of_mixed_shapes_comes_to_rest_without_gaining_energy(tmp_path,
     t, kinetic, energy = pile_energies(history, 2500, 0)
     lost = -energy.min()
     assert np.diff(energy).max() < 2e-3*lost, np.diff(energy).max()/lost
-    late = t >= 0.22 - 1e-9
+    late = t >= 0.45 - 1e-9
     for name, h in history.items():
         assert np.linalg.norm(h[late, 4:7], axis=1).max() < 2e-4, name
         assert np.linalg.norm(h[late, 7:10], axis=1).max() < 0.2, name

@@ -233,10 +233,17 @@ Foam::scalar Foam::convexOverlap::leastDepth
         // the tangent plane, moving to the best, halving the step when
         // none is better; then along each ridge near the point found
         // (where the pattern search stalls: the depth rises steeply off
-        // the ridge), by golden sections, until neither improves
+        // the ridge), by golden sections, until neither improves. Along a
+        // ridge that none of the eight directions follows, the search
+        // zigzags across it at the small step where it stalled: millions
+        // of moves for a sphere on a box's edge in a pile at rest. Past
+        // ten moves at one step the golden sections take over, and a new
+        // round starts; the last round is not cut
         for (label round = 0; round < 4 && least > target; ++round)
         {
             scalar step = spacing_;
+            label movesAtStep = 0;
+            bool zigzag = false;
             while (least > target && step > tolerance)
             {
                 vector t1(n ^ vector(1, 0, 0));
@@ -267,10 +274,16 @@ Foam::scalar Foam::convexOverlap::leastDepth
                 if (moved)
                 {
                     n = best/mag(best);
+                    if (++movesAtStep > 10 && round < 3)
+                    {
+                        zigzag = true;
+                        break;
+                    }
                 }
                 else
                 {
                     step *= 0.5;
+                    movesAtStep = 0;
                 }
             }
 
@@ -298,7 +311,7 @@ Foam::scalar Foam::convexOverlap::leastDepth
                     improved = true;
                 }
             }
-            if (!improved)
+            if (!improved && !zigzag)
             {
                 break;
             }
