@@ -239,7 +239,8 @@ Foam::scalar Foam::convexOverlap::leastDepth
         // of moves for a sphere on a box's edge in a pile at rest. Past
         // ten moves at one step the golden sections take over, and a new
         // round starts; the last round is not cut
-        for (label round = 0; round < 4 && least > target; ++round)
+        const label nRounds = 4;
+        for (label round = 0; round < nRounds && least > target; ++round)
         {
             scalar step = spacing_;
             label movesAtStep = 0;
@@ -274,7 +275,7 @@ Foam::scalar Foam::convexOverlap::leastDepth
                 if (moved)
                 {
                     n = best/mag(best);
-                    if (++movesAtStep > 10 && round < 3)
+                    if (++movesAtStep > 10 && round < nRounds - 1)
                     {
                         zigzag = true;
                         break;
