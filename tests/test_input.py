@@ -308,6 +308,8 @@ BAD_INPUT = [
         "maxStartOverlap 1.5 must be in [0, 1)"),
     bad("contact keyword misspelt", contact("overlaps exact; " + PAIRS),
         "Unknown keyword 'overlaps' in the contact settings"),
+    bad("lubrication keyword misspelt", contact("lubrication { rnage 0.001; } " + PAIRS),
+        "Unknown keyword 'rnage' in the contact settings' lubrication", "range"),
     bad("plane wall normal missing", contact(PAIRS + " walls { lid { type plane; point (0 0 1); } }"),
         "'normal'", "walls.lid"),
     bad("plane wall keyword unknown",

@@ -18,17 +18,25 @@ Foam::dlmParticle::motionTypeNames
 });
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
-void Foam::dlmParticle::checkKeywords(const dictionary& dict) const
+Foam::wordList Foam::dlmParticle::keywords()
 {
-    wordHashSet known
+    return wordList
     ({
         "shape", "density", "position", "velocity", "angularVelocity",
         "orientation", "motion", "velocity0", "angularVelocity0", "force",
         "torque", "material", "contactForce", "contactTorque",
         "stepDisplacement", "stepRotation"
     });
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dlmParticle::checkKeywords(const dictionary& dict) const
+{
+    wordHashSet known(keywords());
     known.insert(shape_->keywords());
 
     Foam::checkKeywords

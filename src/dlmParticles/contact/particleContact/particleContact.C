@@ -62,7 +62,7 @@ void Foam::particleContact::readLaws()
             checkKeywords
             (
                 pairDict,
-                wordHashSet({"materials", "law"}),
+                wordHashSet(noLawKeywords()),
                 "for contact pair " + e.keyword()
             );
             law(a, b) = noContact;
@@ -1055,6 +1055,30 @@ void Foam::particleContact::evaluate(const scalar h)
 }
 
 
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::wordList Foam::particleContact::keywords()
+{
+    return wordList
+    ({
+        "active", "overlap", "stepsPerContact", "meshWalls", "pairs", "walls",
+        "lubrication", "maxStartOverlap"
+    });
+}
+
+
+Foam::wordList Foam::particleContact::lubricationKeywords()
+{
+    return wordList({"active", "range", "roughness"});
+}
+
+
+Foam::wordList Foam::particleContact::noLawKeywords()
+{
+    return wordList({"materials", "law"});
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleContact::particleContact
@@ -1081,12 +1105,7 @@ Foam::particleContact::particleContact
     maxOverlapRatio_(0),
     maxStartOverlap_(dict.getOrDefault<scalar>("maxStartOverlap", 0.05))
 {
-    const wordHashSet known
-    ({
-        "active", "overlap", "stepsPerContact", "meshWalls", "pairs", "walls",
-        "lubrication", "maxStartOverlap"
-    });
-    checkKeywords(dict, known, "in the contact settings");
+    checkKeywords(dict, wordHashSet(keywords()), "in the contact settings");
     if (maxStartOverlap_ < 0 || maxStartOverlap_ >= 1)
     {
         FatalIOErrorInFunction(dict)
@@ -1101,6 +1120,12 @@ Foam::particleContact::particleContact
     }
 
     const dictionary lubrication(dict.subOrEmptyDict("lubrication"));
+    checkKeywords
+    (
+        lubrication,
+        wordHashSet(lubricationKeywords()),
+        "in the contact settings' lubrication"
+    );
     const bool withFluid = cloud.rhoFluid().value() > 0;
     if (lubrication.getOrDefault<bool>("active", withFluid))
     {

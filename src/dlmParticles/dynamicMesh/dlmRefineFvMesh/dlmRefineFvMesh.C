@@ -80,11 +80,7 @@ void Foam::dlmRefineFvMesh::readTargets()
     checkKeywords
     (
         coeffs,
-        wordHashSet
-        ({
-            "refineInterval", "maxCells", "nBufferLayers", "correctFluxes",
-            "dumpLevel", "targets"
-        }),
+        wordHashSet(targetsCoeffsKeywords()),
         "for refinement by targets (dlmRefineFvMesh)"
     );
 
@@ -538,6 +534,18 @@ Foam::labelList Foam::dlmRefineFvMesh::selectUnrefinePoints
         markedCell,
         pointLargest
     );
+}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::wordList Foam::dlmRefineFvMesh::targetsCoeffsKeywords()
+{
+    return wordList
+    ({
+        "refineInterval", "maxCells", "nBufferLayers", "correctFluxes",
+        "dumpLevel", "targets"
+    });
 }
 
 

@@ -13,6 +13,15 @@
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
 template<class Packing>
+Foam::wordList Foam::packIntoFileKeywords()
+{
+    wordList words(Packing::keywords);
+    words.append("output");
+    return words;
+}
+
+
+template<class Packing>
 void Foam::packIntoFile
 (
     const Time& runTime,
@@ -33,8 +42,8 @@ void Foam::packIntoFile
         )
     );
 
-    wordHashSet known(Packing::keywords);
-    known.insert({"output", "FoamFile"});
+    wordHashSet known(packIntoFileKeywords<Packing>());
+    known.insert("FoamFile");
     checkKeywords(dict, known);
 
     Packing packing(dict);

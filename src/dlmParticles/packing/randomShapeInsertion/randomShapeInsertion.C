@@ -16,6 +16,11 @@ const Foam::wordList Foam::randomShapeInsertion::keywords
     "box", "periodic", "gap", "seed", "maxAttempts", "particles"
 });
 
+const Foam::wordList Foam::randomShapeInsertion::groupKeywords
+({
+    "number", "orientation"
+});
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -62,8 +67,6 @@ Foam::scalar Foam::randomShapeInsertion::readGroups()
                 << " must be at least 1" << exit(FatalIOError);
         }
 
-        dictionary entries(group);
-        entries.remove("number");
         randomOrientation_[g] = true;
         if (group.found("orientation"))
         {
@@ -84,7 +87,13 @@ Foam::scalar Foam::randomShapeInsertion::readGroups()
                 fixedOrientation_[g] = group.get<quaternion>("orientation");
             }
         }
-        entries.remove("orientation");
+
+        // The group's own keywords read, the rest are a particle's
+        dictionary entries(group);
+        for (const word& key : groupKeywords)
+        {
+            entries.remove(key);
+        }
 
         // Checked as a particle: unknown keywords and bad values are
         // named as the solvers name them

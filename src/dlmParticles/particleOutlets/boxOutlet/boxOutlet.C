@@ -45,11 +45,17 @@ bool Foam::particleOutlets::boxOutlet::holds(const point& X) const
 }
 
 
-Foam::wordList Foam::particleOutlets::boxOutlet::keywords() const
+Foam::wordList Foam::particleOutlets::boxOutlet::typeKeywords()
 {
-    wordList words(particleOutlet::keywords());
+    wordList words(particleOutlet::typeKeywords());
     words.append(wordList({"min", "max"}));
     return words;
+}
+
+
+Foam::wordList Foam::particleOutlets::boxOutlet::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -63,9 +63,15 @@ Foam::autoPtr<Foam::particleOutlet> Foam::particleOutlet::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleOutlet::keywords() const
+Foam::wordList Foam::particleOutlet::typeKeywords()
 {
     return wordList({"type"});
+}
+
+
+Foam::wordList Foam::particleOutlet::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -44,11 +44,17 @@ bool Foam::particleOutlets::planeOutlet::holds(const point& X) const
 }
 
 
-Foam::wordList Foam::particleOutlets::planeOutlet::keywords() const
+Foam::wordList Foam::particleOutlets::planeOutlet::typeKeywords()
 {
-    wordList words(particleOutlet::keywords());
+    wordList words(particleOutlet::typeKeywords());
     words.append(wordList({"point", "normal"}));
     return words;
+}
+
+
+Foam::wordList Foam::particleOutlets::planeOutlet::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -673,9 +673,15 @@ void Foam::particleShapes::box::roundedDrawing
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleShapes::box::keywords() const
+Foam::wordList Foam::particleShapes::box::typeKeywords()
 {
     return wordList({"halfExtents", "edgeRadius"});
+}
+
+
+Foam::wordList Foam::particleShapes::box::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -46,9 +46,15 @@ Foam::particleShapes::disk::disk(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleShapes::disk::keywords() const
+Foam::wordList Foam::particleShapes::disk::typeKeywords()
 {
     return wordList({"radius"});
+}
+
+
+Foam::wordList Foam::particleShapes::disk::keywords() const
+{
+    return typeKeywords();
 }
 
 

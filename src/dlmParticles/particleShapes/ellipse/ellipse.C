@@ -104,9 +104,15 @@ Foam::particleShapes::ellipse::ellipse(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleShapes::ellipse::keywords() const
+Foam::wordList Foam::particleShapes::ellipse::typeKeywords()
 {
     return wordList({"semiAxes"});
+}
+
+
+Foam::wordList Foam::particleShapes::ellipse::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -231,9 +231,15 @@ Foam::particleShapes::ellipsoid::ellipsoid(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleShapes::ellipsoid::keywords() const
+Foam::wordList Foam::particleShapes::ellipsoid::typeKeywords()
 {
     return wordList({"semiAxes"});
+}
+
+
+Foam::wordList Foam::particleShapes::ellipsoid::keywords() const
+{
+    return typeKeywords();
 }
 
 

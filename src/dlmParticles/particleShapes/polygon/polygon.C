@@ -266,9 +266,15 @@ Foam::particleShapes::polygon::polygon(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleShapes::polygon::keywords() const
+Foam::wordList Foam::particleShapes::polygon::typeKeywords()
 {
     return wordList({"vertices"});
+}
+
+
+Foam::wordList Foam::particleShapes::polygon::keywords() const
+{
+    return typeKeywords();
 }
 
 

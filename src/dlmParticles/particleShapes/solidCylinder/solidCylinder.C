@@ -57,9 +57,15 @@ Foam::particleShapes::solidCylinder::solidCylinder(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleShapes::solidCylinder::keywords() const
+Foam::wordList Foam::particleShapes::solidCylinder::typeKeywords()
 {
     return wordList({"radius", "length"});
+}
+
+
+Foam::wordList Foam::particleShapes::solidCylinder::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -46,9 +46,15 @@ Foam::particleShapes::sphere::sphere(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleShapes::sphere::keywords() const
+Foam::wordList Foam::particleShapes::sphere::typeKeywords()
 {
     return wordList({"radius"});
+}
+
+
+Foam::wordList Foam::particleShapes::sphere::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -321,9 +321,15 @@ Foam::particleShapes::triSurfaceShape::triSurfaceShape(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::particleShapes::triSurfaceShape::keywords() const
+Foam::wordList Foam::particleShapes::triSurfaceShape::typeKeywords()
 {
     return wordList({"file", "scale"});
+}
+
+
+Foam::wordList Foam::particleShapes::triSurfaceShape::keywords() const
+{
+    return typeKeywords();
 }
 
 

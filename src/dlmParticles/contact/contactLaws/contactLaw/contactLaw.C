@@ -222,20 +222,21 @@ Foam::contactLaw::contactLaw
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::contactLaw::keywords() const
+Foam::wordList Foam::contactLaw::typeKeywords()
 {
-    wordList words
+    return wordList
     ({
         "materials", "law", "restitution", "friction", "tangential",
         "frictionLimit", "tangentialStiffnessRatio", "tangentialDampingRatio",
         "clipNormalForce", "stiffness", "contactTime", "rollingFriction",
         "twistingFriction"
     });
-    if (exponent() != 1)
-    {
-        words.append("impactVelocity");
-    }
-    return words;
+}
+
+
+Foam::wordList Foam::contactLaw::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -36,6 +36,19 @@ Foam::contactLaws::linearSpringDashpot::linearSpringDashpot
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::wordList Foam::contactLaws::linearSpringDashpot::typeKeywords()
+{
+    // Linear: the contact time does not depend on the impact velocity
+    return contactLaw::typeKeywords();
+}
+
+
+Foam::wordList Foam::contactLaws::linearSpringDashpot::keywords() const
+{
+    return typeKeywords();
+}
+
+
 Foam::scalar Foam::contactLaws::linearSpringDashpot::exponent() const
 {
     return 1;

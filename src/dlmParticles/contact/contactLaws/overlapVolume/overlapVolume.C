@@ -39,6 +39,21 @@ Foam::contactLaws::overlapVolume::overlapVolume
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::wordList Foam::contactLaws::overlapVolume::typeKeywords()
+{
+    // Nonlinear: a contact time needs the impact velocity it holds at
+    wordList words(contactLaw::typeKeywords());
+    words.append("impactVelocity");
+    return words;
+}
+
+
+Foam::wordList Foam::contactLaws::overlapVolume::keywords() const
+{
+    return typeKeywords();
+}
+
+
 Foam::scalar Foam::contactLaws::overlapVolume::exponent() const
 {
     return nDimensions_ == 3 ? 2 : 1.5;

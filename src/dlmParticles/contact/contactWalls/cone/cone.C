@@ -46,11 +46,17 @@ Foam::contactWalls::cone::cone
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::contactWalls::cone::keywords() const
+Foam::wordList Foam::contactWalls::cone::typeKeywords()
 {
-    wordList words(contactWall::keywords());
+    wordList words(contactWall::typeKeywords());
     words.append(wordList({"point1", "radius1", "point2", "radius2"}));
     return words;
+}
+
+
+Foam::wordList Foam::contactWalls::cone::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -247,9 +247,15 @@ void Foam::contactWall::revolutionContacts
 }
 
 
-Foam::wordList Foam::contactWall::keywords() const
+Foam::wordList Foam::contactWall::typeKeywords()
 {
     return wordList({"type", "material", "lubrication"});
+}
+
+
+Foam::wordList Foam::contactWall::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -43,11 +43,17 @@ Foam::contactWalls::cylinder::cylinder
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::contactWalls::cylinder::keywords() const
+Foam::wordList Foam::contactWalls::cylinder::typeKeywords()
 {
-    wordList words(contactWall::keywords());
+    wordList words(contactWall::typeKeywords());
     words.append(wordList({"point", "axis", "radius"}));
     return words;
+}
+
+
+Foam::wordList Foam::contactWalls::cylinder::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -153,9 +153,18 @@ Foam::contactWalls::patches::patches
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::wordList Foam::contactWalls::patches::typeKeywords()
+{
+    // The mesh's patches, not a surface file
+    wordList words(contactWall::typeKeywords());
+    words.append("patches");
+    return words;
+}
+
+
 Foam::wordList Foam::contactWalls::patches::keywords() const
 {
-    return wordList({"type", "material", "lubrication", "patches"});
+    return typeKeywords();
 }
 
 

@@ -41,11 +41,17 @@ Foam::contactWalls::plane::plane
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::contactWalls::plane::keywords() const
+Foam::wordList Foam::contactWalls::plane::typeKeywords()
 {
-    wordList words(contactWall::keywords());
+    wordList words(contactWall::typeKeywords());
     words.append(wordList({"point", "normal"}));
     return words;
+}
+
+
+Foam::wordList Foam::contactWalls::plane::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -142,11 +142,17 @@ Foam::contactWalls::surface::surface
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::contactWalls::surface::keywords() const
+Foam::wordList Foam::contactWalls::surface::typeKeywords()
 {
-    wordList words(contactWall::keywords());
+    wordList words(contactWall::typeKeywords());
     words.append(wordList({"file", "scale"}));
     return words;
+}
+
+
+Foam::wordList Foam::contactWalls::surface::keywords() const
+{
+    return typeKeywords();
 }
 
 

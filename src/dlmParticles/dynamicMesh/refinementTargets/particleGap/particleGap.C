@@ -35,11 +35,17 @@ Foam::refinementTargets::particleGap::particleGap(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::refinementTargets::particleGap::keywords() const
+Foam::wordList Foam::refinementTargets::particleGap::typeKeywords()
 {
-    wordList known(refinementTarget::keywords());
+    wordList known(refinementTarget::typeKeywords());
     known.append(wordList({"cells", "walls"}));
     return known;
+}
+
+
+Foam::wordList Foam::refinementTargets::particleGap::keywords() const
+{
+    return typeKeywords();
 }
 
 

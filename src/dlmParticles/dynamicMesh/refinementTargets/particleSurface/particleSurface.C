@@ -38,11 +38,17 @@ Foam::refinementTargets::particleSurface::particleSurface
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::refinementTargets::particleSurface::keywords() const
+Foam::wordList Foam::refinementTargets::particleSurface::typeKeywords()
 {
-    wordList known(refinementTarget::keywords());
+    wordList known(refinementTarget::typeKeywords());
     known.append(wordList({"cells", "cellsInside"}));
     return known;
+}
+
+
+Foam::wordList Foam::refinementTargets::particleSurface::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -190,9 +190,15 @@ Foam::autoPtr<Foam::refinementTarget> Foam::refinementTarget::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::refinementTarget::keywords() const
+Foam::wordList Foam::refinementTarget::typeKeywords()
 {
     return wordList({"type", "level"});
+}
+
+
+Foam::wordList Foam::refinementTarget::keywords() const
+{
+    return typeKeywords();
 }
 
 

@@ -36,11 +36,17 @@ Foam::refinementTargets::vorticity::vorticity(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordList Foam::refinementTargets::vorticity::keywords() const
+Foam::wordList Foam::refinementTargets::vorticity::typeKeywords()
 {
-    wordList known(refinementTarget::keywords());
+    wordList known(refinementTarget::typeKeywords());
     known.append(wordList({"threshold", "U"}));
     return known;
+}
+
+
+Foam::wordList Foam::refinementTargets::vorticity::keywords() const
+{
+    return typeKeywords();
 }
 
 
