@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Accuracy and cost of the solid fractions of each particle shape, as the
-solver computes them (issue 30): on meshes of cubic cells at 4, 8 and 16
+solver computes them: on meshes of cubic cells at 4, 8 and 16
 cells per smallest dimension of the shape (the tutorials use about 8 to 16),
 for several random centres (and random orientations where the row says so),
 the relative error of the sum of fraction times cell volume against the

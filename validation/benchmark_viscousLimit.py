@@ -1,8 +1,7 @@
 #!/usr/bin/env python3
 """The largest stable viscous number nu deltaT/h^2 of the flow solver in
 cells longer in one direction, with no particle: the measurements behind
-the solver's default limit (viscousNumber.H; validation/README.md, "Cells
-longer in one direction").
+the solver's default limit (viscousNumber.H; validation/cases/viscousLimit.md).
 
 A periodic box of uniform cells A h x h x h (8 x 24 x 24 cells, h = 0.25
 mm, nu = 1e-3 m2/s) holds a random flow of 1e-5 m/s that decays; 300

@@ -17,7 +17,7 @@ rows); writes results/DKT.png (the curves of this call's runs) and
 results/DKT_speed_error.png. --end-time runs past the reference's 0.3 s to
 see a late tumble.
 
---levels L refines the mesh in the plane at the disks (issue 32): N is then
+--levels L refines the mesh in the plane at the disks: N is then
 the finest cells per diameter, at the disks' surfaces and in the gap between
 them, on a base mesh of N/2^L (their wakes one level less); those rows go to
 results/DKT_refined.csv, beside the uniform mesh's in the speed-error plot.

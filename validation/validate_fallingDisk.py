@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The paper's falling disk (Kanarska et al. section 3.3, tutorials/
 fallingDisk) on a uniform mesh and on a coarser one refined in the plane at
-the disk (issue 32), both with the same finest cells: what the refinement
+the disk, both with the same finest cells: what the refinement
 costs in accuracy and saves in time.
 
 For each fluid (mu = 3, 0.1, 0.002 Pa s: Re about 0.2, 100 and 2000) the

@@ -63,7 +63,7 @@ GROWTH = 1.2                # largest ratio of neighbouring cell sizes
 # the periodic faces, long along one axis and h across, without a particle
 # too and in OpenFOAM's own pimpleFoam. Three correctors hold 2 at N = 8-16;
 # six hold 50 at N = 8 (a tenth of the steps) but not at 12, whose longest
-# cells are longer (validation/README.md)
+# cells are longer (validation/cases/viscousLimit.md)
 VISCOUS_NUMBER = 2
 PRESSURE_CORRECTORS = 3
 SETTLE = 0.12               # run time in L^2/nu

@@ -47,7 +47,7 @@ pebble diameters (the tutorial's 4; the lid a diameter above its end). The
 paper does not give it, and in water it sets the rate: 47.6 / 59.6 / 72.4
 kg/(m2 s) at 4 / 8 / 12 d in the reduced scene at N = 4 (the stream in the
 tube, lighter than the water around it, likely drives water up it and back
-through the cone, an air-lift; validation/README.md).
+through the cone, an air-lift; validation/cases/pebbleDischarge.md).
 
 --boundary-layer-slip sets the rigid projection's boundaryLayerSlip: a
 pebble's viscous layer (about d/100 at its Reynolds number of several

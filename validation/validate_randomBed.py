@@ -123,7 +123,7 @@ def mapped_run(re_number, n, coarse, end_time, ranks, write_interval, bed, env):
     its velocity, pressure and carried force mapped onto the finer mesh
     (mapFields -consistent) and its driving pressure gradient, then run to
     end_time. At fine N this settles in less than half the flow time of a
-    start from rest (validation/README.md, random bed N = 40). Lambda is
+    start from rest (validation/cases/randomBed.md, N = 40). Lambda is
     averaged over the last quarter of this run; the wall time adds the
     coarse run's."""
     source = Case(RUNS / f"{bed.name}_{re_number:g}_{coarse}", env)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""One pebble of the pebble discharge (issue 29) rising alone in still water:
+"""One pebble of the pebble discharge rising alone in still water:
 its rise velocity against the standard drag curve, at several resolutions.
 
 The discharge's rate depends on how much the water holds the pebbles back,

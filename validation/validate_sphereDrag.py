@@ -10,7 +10,7 @@ blockage), Re = U D/nu. C_D = F/(rho U^2 pi D^2/8) from the particle
 history, averaged over the last fifth of 30 D/U; its drift over that
 window is reported. Writes results/sphereDrag.csv.
 
---levels L refines the mesh at the sphere (issue 32): N is then the base
+--levels L refines the mesh at the sphere: N is then the base
 mesh's cells per diameter, the sphere's surface band (particleSurface,
 3 fine cells out, 1 in) gets N 2^L, the near wake (vorticity above 0.2
 U/R) N 2^(L-1) and the far wake (above 0.05 U/R) N 2^(L-2); --box W,L

@@ -48,8 +48,8 @@ def rms_velocity_deviation(case, history):
     return np.sqrt(np.mean((u - u_ref[inside])**2))/tenCate.CASES[case][2]
 
 
-# The table of the coupling before issue 28 (explicit projection, viscous
-# number at most 1), kept for comparison
+# The table of the coupling before its changes of 2026-12-04 (explicit
+# projection, viscous number at most 1), kept for comparison
 BEFORE = RESULTS / "tenCate_before_issue28.csv"
 
 
@@ -193,7 +193,7 @@ def main():
                      colors={f"{c} refined": colors[c] for c in colors})
     ax.set_ylabel("|u_max error| [%]")
     ax.set_title("ten Cate: speed against error (labels: cells/d, refined: base+levels;\n"
-                 "dotted: the coupling before issue 28; 2 ranks)", fontsize=9)
+                 "dotted: the coupling before 2026-12-04; 2 ranks)", fontsize=9)
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
     fig.savefig(RESULTS / "tenCate_speed_error.png", dpi=120)
