@@ -45,7 +45,8 @@ def test_the_heap_top_is_never_given_back(foam_env):
     """glibc gives the heap's free top back to the kernel once it exceeds
     the trim threshold; at 4.8 M cells per rank a step frees more than 1 GB
     there, and with a threshold of 1 GB the random bed at N = 48 spent
-    28 % of its time in the kernel zeroing it again (validation/README.md).
+    28 % of its time in the kernel zeroing it again
+    (validation/cases/allocation.md).
     The loader lists the tunables as this environment sets them."""
     listed = subprocess.run([dynamic_loader(), "--list-tunables"], env=foam_env,
                             capture_output=True, text=True, check=True).stdout

@@ -29,7 +29,7 @@ def test_correlations_convert_to_the_papers_lambda(porosity, re_number):
     1.75 Re at any porosity, as eq. 25 defines them; the two fits to fully
     resolved simulations reduce to Carman-Kozeny (plus their small Stokes
     correction) as Re goes to 0, and give the values quoted in
-    validation/README.md for the paper's bed."""
+    validation/cases/randomBed.md for the paper's bed."""
     def carman_kozeny(phi, re_s):
         return 10*phi/(1 - phi)**2
 

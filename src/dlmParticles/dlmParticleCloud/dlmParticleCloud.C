@@ -609,8 +609,8 @@ void Foam::dlmParticleCloud::checkStart() const
                 << p.position() << " has a diameter of " << nCells
                 << " cells; the rigid projection needs at least "
                 << minCellsPerDiameter << " (6 or more for accuracy, see"
-                << " validation/README.md): refine the mesh or enlarge the"
-                << " particle" << exit(FatalError);
+                << " validation/cases/tenCate.md): refine the mesh or"
+                << " enlarge the particle" << exit(FatalError);
         }
     }
 
