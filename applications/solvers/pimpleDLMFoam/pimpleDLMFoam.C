@@ -33,7 +33,8 @@ Description
     4. the follow step (rigidProjection::followParticles): the forced
        cells take the contacts' change of the particles' velocities, and
        the excess mass (rho_s - rho_f) phi a particle heavier than the fluid
-       moved into a cell carries the particle's momentum, not the fluid's;
+       moved into or out of a cell carries the particle's momentum, not the
+       fluid's (at both time levels of a backward time derivative);
     5. free particles whose centroid entered an outlet (particleProperties
        'outlets') leave the simulation, counted and recorded.
 

@@ -259,15 +259,43 @@ void Foam::fv::rigidProjection::followParticles
     // since the projection, in its cells
     bool changed = treatment_->followContacts(change.primitiveFieldRef());
 
-    // The excess mass each particle moved into a cell brings its velocity
+    // The excess mass each particle moved into a cell brings the
+    // particle's velocity, and the excess mass it moved out of a cell takes
+    // it away: the mixture's momentum only moves with the mass
+    // (validation/cases/freeSphere.md)
     const vectorField followed(u + change.primitiveField());
-    scalarField fraction0(mesh_.nCells(), Zero);
+
+    // With a second-order time derivative (backward) the momentum equation
+    // also takes the last step's velocity with the new densities: the mass
+    // moved carries its momentum there too
+    const bool olderLevel = U.nOldTimes() > 1;
+    vectorField changeOld(olderLevel ? mesh_.nCells() : 0, Zero);
+    const vectorField& u0 =
+        olderLevel ? U.oldTime().primitiveField() : U.primitiveField();
+    // The excess mass leaving a cell moved rigidly only where the
+    // projection held it so; elsewhere it moved with the cell's velocity
+    boolList rigid(mesh_.nCells(), false);
+    treatment_->markRigidExcess(rigid);
+
+    labelListList images(followedCells_.size());
     forAll(particles, i)
     {
-        const dlmParticle& p = particles[i];
-        const scalar excess = p.mixtureDensity(rhoFluid) - rhoFluid;
         const label body = cloud.source(i);
-        if (excess <= 0 || body >= followedCells_.size())
+        if (body < images.size())
+        {
+            images[body].append(i);
+        }
+    }
+    scalarField fraction0(mesh_.nCells(), Zero);
+    forAll(images, body)
+    {
+        if (images[body].empty())
+        {
+            continue;
+        }
+        const dlmParticle& p0 = particles[images[body].first()];
+        const scalar excess = p0.mixtureDensity(rhoFluid) - rhoFluid;
+        if (excess <= 0)
         {
             continue;
         }
@@ -278,26 +306,68 @@ void Foam::fv::rigidProjection::followParticles
             fraction0[followedCells_[body][k]] = followedFractions_[body][k];
         }
 
-        const DynamicList<label>& cells = cloud.cells(i);
-        const DynamicList<scalar>& fractions = cloud.fractions(i);
-        forAll(cells, k)
+        auto moveExcess = [&]
+        (
+            const dlmParticle& p,
+            const label celli,
+            const scalar gained
+        )
         {
-            const label celli = cells[k];
-            const scalar gained = excess*(fractions[k] - fraction0[celli]);
-            if (gained > 0)
+            const vector us
+            (
+                p.velocity()
+              + (p.angularVelocity() ^ (C[celli] - p.position()))
+            );
+            change[celli] += gained/rho[celli]*(us - followed[celli]);
+            if (olderLevel)
             {
-                const vector us
-                (
-                    p.velocity()
-                  + (p.angularVelocity() ^ (C[celli] - p.position()))
-                );
-                change[celli] += gained/rho[celli]*(us - followed[celli]);
-                changed = true;
+                changeOld[celli] += gained/rho[celli]*(us - u0[celli]);
+            }
+            changed = true;
+        };
+
+        // Cells the body covers now: gained or lost some of its mass
+        for (const label i : images[body])
+        {
+            const DynamicList<label>& cells = cloud.cells(i);
+            const DynamicList<scalar>& fractions = cloud.fractions(i);
+            forAll(cells, k)
+            {
+                const label celli = cells[k];
+                const scalar gained = excess*(fractions[k] - fraction0[celli]);
+                if (gained > 0 || (gained < 0 && rigid[celli]))
+                {
+                    moveExcess(particles[i], celli, gained);
+                }
+                fraction0[celli] = 0;
             }
         }
 
+        // Cells the body left: all of its mass there went with the image
+        // nearest to the cell
         for (const label celli : followedCells_[body])
         {
+            if (fraction0[celli] > 0 && rigid[celli])
+            {
+                label nearest = images[body].first();
+                for (const label i : images[body])
+                {
+                    if
+                    (
+                        magSqr(C[celli] - particles[i].position())
+                      < magSqr(C[celli] - particles[nearest].position())
+                    )
+                    {
+                        nearest = i;
+                    }
+                }
+                moveExcess
+                (
+                    particles[nearest],
+                    celli,
+                    -excess*fraction0[celli]
+                );
+            }
             fraction0[celli] = 0;
         }
     }
@@ -307,6 +377,11 @@ void Foam::fv::rigidProjection::followParticles
     {
         change.correctBoundaryConditions();
         U.primitiveFieldRef() += change.primitiveField();
+        if (olderLevel)
+        {
+            U.oldTime().primitiveFieldRef() += changeOld;
+            U.oldTime().correctBoundaryConditions();
+        }
         U.correctBoundaryConditions();
         phi += fvc::flux(change);
     }

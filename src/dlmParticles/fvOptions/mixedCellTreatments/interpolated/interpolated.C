@@ -1095,6 +1095,18 @@ bool Foam::fv::interpolated::followContacts(vectorField& change) const
 }
 
 
+void Foam::fv::interpolated::markRigidExcess(boolList& rigid) const
+{
+    for (const DynamicList<label>& cells : regions_.cells())
+    {
+        for (const label celli : cells)
+        {
+            rigid[celli] = true;
+        }
+    }
+}
+
+
 void Foam::fv::interpolated::updateMesh()
 {
     const label nCells = mesh_.nCells();

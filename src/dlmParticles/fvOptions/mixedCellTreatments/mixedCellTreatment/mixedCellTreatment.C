@@ -146,6 +146,10 @@ bool Foam::fv::mixedCellTreatment::followContacts(vectorField& change) const
 }
 
 
+void Foam::fv::mixedCellTreatment::markRigidExcess(boolList& rigid) const
+{}
+
+
 void Foam::fv::mixedCellTreatment::updateMesh()
 {}
 
