@@ -427,9 +427,12 @@ def viscous_limit():
 
 
 def free_sphere():
-    return HAND(("free sphere, Re 100-300 (Uhlmann & Dusek 2014)",
-                 "settling velocity and path", "Uhlmann & Dusek (2014)", "-", "in progress",
-                 "-", "freeSphere"))
+    best = max(rows("freeSphere.csv", Ga=144, surfaceCellsPerDiameter=16, refineInterval=3),
+               key=lambda r: r["heightD"])
+    return ("free sphere, Re 185-365", "terminal speed, path",
+            "Uhlmann & Dusek (2014)", "2 % (Ga 144, 178)",
+            f"Ga 144: {pct(best['uV_error'], 1)} at 16 cells per diameter at the surface;"
+            " not met", duration(best["wallTime_s"]), "freeSphere")
 
 
 ROWS = [disk_stokes, ten_cate, duct_sphere, ten_cate_refined, falling_disk, dkt_refined,
