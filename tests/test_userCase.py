@@ -24,6 +24,7 @@ BARS = np.array([[(0.5 + k)*SPACING, 1.5e-3] for k in range(6)])
 H = 0.25e-3/2                      # the refined cells' size
 RHO, RHO_S, G = 1000, 1200, 9.81
 END = "0.3"
+DEPTH = 1e-3                       # the mesh's thickness
 REST = 0.25                        # from here on the disks are at rest
 
 
@@ -73,8 +74,11 @@ def test_disks_settle_onto_the_sieve_and_rest_in_its_gaps(sieve_runs):
     cell, its speed and surface speed end below 1e-4 of its largest
     speed, and the sieve carries its weight less its buoyancy, (rho_s -
     rho) g pi R^2 per unit depth, to 1 %, straight up (horizontal contact
-    force below 1 % of it). The mesh followed the particles: every cell
-    the surfaces cut at the end is at level 1."""
+    force below 1 % of it), and the fluid's force on it (written for the
+    mesh's depth) is its buoyancy, rho g pi R^2 DEPTH, to 2 % (it was off
+    by the contact force per unit depth less the same force on the depth).
+    The mesh followed the particles: every cell the surfaces cut at the
+    end is at level 1."""
     case = sieve_runs[2]
     disks, bars = disks_and_bars(case)
     assert len(disks) == 3
@@ -103,6 +107,8 @@ def test_disks_settle_onto_the_sieve_and_rest_in_its_gaps(sieve_runs):
         contact = h[-1, 16:18]
         assert contact[1] == pytest.approx(load, rel=0.01), name
         assert abs(contact[0]) < 0.01*load, name
+        fluid = h[-1, 10:12]
+        assert fluid[1] == pytest.approx(RHO*G*math.pi*R**2*DEPTH, rel=0.02), name
 
     # The sieve as the case sets it, held fixed
     assert disks_and_bars(case)[1] == pytest.approx(BARS, abs=1e-12)

@@ -1687,6 +1687,24 @@ Foam::dlmParticleCloud::dlmParticleCloud
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::dlmParticleCloud::loadDepth() const
+{
+    if (!twoD())
+    {
+        return 1;
+    }
+    const Vector<label>& solved = mesh_.solutionD();
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (solved[d] < 0)
+        {
+            return mesh_.bounds().span()[d];
+        }
+    }
+    return 1;
+}
+
+
 void Foam::dlmParticleCloud::updateMesh()
 {
     updateCellGeometry();
@@ -1814,8 +1832,8 @@ void Foam::dlmParticleCloud::move()
                 );
                 p.setLoads
                 (
-                    p.force() - p.contactForce(),
-                    p.torque() - p.contactTorque()
+                    p.force() - loadDepth()*p.contactForce(),
+                    p.torque() - loadDepth()*p.contactTorque()
                 );
             }
         }
