@@ -50,7 +50,7 @@ def rms_velocity_deviation(case, history):
 
 # The table of the coupling before its changes of 2026-12-04 (explicit
 # projection, viscous number at most 1), kept for comparison
-BEFORE = RESULTS / "tenCate_before_issue28.csv"
+BEFORE = RESULTS / "tenCate_before_coupling_fixes.csv"
 
 
 def scale_step(case, factor):
