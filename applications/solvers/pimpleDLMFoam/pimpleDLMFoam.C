@@ -39,10 +39,8 @@ Description
        'outlets') leave the simulation, counted and recorded.
 
     The convection term takes the fluid's density: the solid is carried by
-    the particles' motion (step 4), not by the flux. With the mixture's
-    density, the convection of the velocity jump across a heavy particle's
-    surface cells acted on the solid's mass and braked a particle 1000
-    times as heavy as the fluid by tens of times its drag.
+    the particles' motion (step 4), not by the flux (measurements:
+    validation/cases/heavyParticles.md).
 
     In the first outer corrector the convection takes the flux of the last
     two steps extrapolated to the new time (PIMPLE extrapolateFlux, default
