@@ -427,7 +427,7 @@ def viscous_limit():
 
 
 def free_sphere():
-    best = max(rows("freeSphere.csv", Ga=144, surfaceCellsPerDiameter=16, refineInterval=10),
+    best = max(rows("freeSphere.csv", Ga=144, surfaceCellsPerDiameter=16, refineInterval=20),
                key=lambda r: r["heightD"])
     return ("free sphere, Re 185-365", "terminal speed, path",
             "Uhlmann & Dusek (2014)", "2 % (Ga 144, 178)",
