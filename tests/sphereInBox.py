@@ -41,14 +41,16 @@ def write(case, relative, cls, obj, body):
 def sphere_in_box(case, mode, n, speed, nu, density_ratio=1.5, width=4,
                   below=6, above=12, end_time=None, max_co=0.5, levels=0,
                   convection="Gauss LUST grad(U)", start_speed=None,
-                  write_interval=None, refine_interval=3):
+                  write_interval=None, refine_interval=3, offset=0.0, lateral_speed=0.0):
     """Write the case (blockMesh still to run): n cells per diameter on the
     base mesh, with levels of refinement at the sphere's surface (its wake
     one level less). "held": the box spans below and above diameters about
     the sphere; "prescribed" and "free": it is below + above diameters
     tall, the sphere starting 4 diameters under its lid. end_time defaults
     to the time the sphere moves, or the fluid passes it, by 3/4 of the
-    box's height less 5 diameters."""
+    box's height less 5 diameters. A free sphere may start offset diameters
+    along x off the axis, moving at lateral_speed along x (an oblique path's
+    start, away from the nearer wall)."""
     assert mode in ("held", "prescribed", "free")
     speed, nu, density_ratio, max_co = (float(v) for v in (speed, nu, density_ratio, max_co))
     width, below, above = float(width), float(below), float(above)
@@ -147,7 +149,8 @@ PIMPLE
     motion = {
         "held": "motion fixed;",
         "prescribed": f"motion prescribed; velocity (0 0 {-speed!r});",
-        "free": "" if start_speed is None else f"velocity (0 0 {-start_speed!r});",
+        "free": "" if start_speed is None else
+                f"velocity ({float(lateral_speed)!r} 0 {-start_speed!r});",
     }[mode]
     # Off the mesh's symmetry by a hundredth of a diameter, so that an
     # unstable wake leaves the axis at once rather than from round-off
@@ -159,7 +162,7 @@ particles
         shape sphere;
         radius {D/2!r};
         density {density_ratio*RHO_FLUID!r};
-        position ({0.01*D!r} {-0.007*D!r} {centre!r});
+        position ({(float(offset) + 0.01)*D!r} {-0.007*D!r} {centre!r});
         {motion}
     }}
 }}

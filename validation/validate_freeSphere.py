@@ -10,19 +10,21 @@ published speed less 5 % (an impulsive start, so that the wake forms
 within a few diameters) 4 diameters under the lid. After the first third
 of the fall (the start-up), the mean vertical speed u_V is the fall's
 displacement over its time, the mean horizontal speed u_H the lateral
-displacement's, the angle atan(u_H/u_V); for Ga 190 and 250 the dominant
+displacement's over the last third, the angle atan(u_H/u_V); for Ga 190 and 250 the dominant
 frequency of the lateral velocity as f d/u_g. Reported: each against the
 published (large domain), the drift of u_V over the last third against
 the middle third, the wall time, the steps, the cells and the share of
 the mesh changes. N is the base mesh's cells per diameter; --levels L
 refines the sphere's surface band to N 2^L and its wake (vorticity above
 0.2 U/R) to N 2^(L-1), every --refine-interval steps (3; the band looks
-ahead by as many steps). Writes results/freeSphere.csv and a plot per run
+ahead by as many steps). --offset X starts the sphere X diameters off the
+axis along x and --lateral-speed V moving at V u_g along x (an oblique
+path's start, away from the nearer wall). Writes results/freeSphere.csv and a plot per run
 (results/freeSphere_Ga<Ga>_N<N>_L<L>_W<W>.png).
 
     validation/validate_freeSphere.py [--ga 144,178.46] [--levels 2]
         [--width 6] [--height 30] [--max-co 0.5] [--np 1]
-        [--refine-interval 3] [N ...]
+        [--refine-interval 3] [--offset 0] [--lateral-speed 0] [N ...]
         (default N = 4)
 """
 
@@ -78,7 +80,9 @@ def analyse(history, ug):
         dt = t[b] - t[a]
         return (z[a] - z[b])/dt, math.hypot(x[b] - x[a], y[b] - y[a])/dt
 
-    u_v, u_h = speeds(i0, i2)
+    u_v = speeds(i0, i2)[0]
+    # The oblique path's lateral speed once its slower start-up has passed
+    u_h = speeds(i1, i2)[1]
     drift = speeds(i1, i2)[0]/speeds(i0, i1)[0] - 1
     lateral = history[i0:, 4:6]
     lateral = lateral - lateral.mean(axis=0)
@@ -125,6 +129,8 @@ def main():
     parser.add_argument("--max-co", type=float, default=0.5)
     parser.add_argument("--np", type=int, default=1)
     parser.add_argument("--refine-interval", type=int, default=3)
+    parser.add_argument("--offset", type=float, default=0)
+    parser.add_argument("--lateral-speed", type=float, default=0)
     parser.add_argument("resolutions", nargs="*", type=int, default=[4])
     args = parser.parse_args()
 
@@ -135,7 +141,9 @@ def main():
         ref_v, ref_h, ref_angle = reference(galileo)
         for n in args.resolutions:
             name = (f"freeSphere_Ga{galileo:g}_N{n}_L{args.levels}_W{args.width:g}"
-                    f"_H{args.height:g}_Co{args.max_co:g}_R{args.refine_interval}")
+                    f"_H{args.height:g}_Co{args.max_co:g}_R{args.refine_interval}"
+                    + (f"_X{args.offset:g}_V{args.lateral_speed:g}"
+                       if args.offset or args.lateral_speed else ""))
             case = Case(RUNS / name, env)
             if case.path.exists():
                 shutil.rmtree(case.path)
@@ -146,7 +154,8 @@ def main():
                           width=args.width, below=4, above=args.height - 4,
                           max_co=args.max_co, levels=args.levels, start_speed=start,
                           end_time=(args.height - 8)*D/(ref_v*ug),
-                          refine_interval=args.refine_interval)
+                          refine_interval=args.refine_interval, offset=args.offset,
+                          lateral_speed=args.lateral_speed*ug)
             case.run("blockMesh")
             if args.np > 1:
                 case.set("system/decomposeParDict", "numberOfSubdomains", args.np)
