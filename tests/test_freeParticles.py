@@ -4,6 +4,8 @@ equivalent stream (Galilean invariance), and a free sphere at Re 185
 the one at which the held sphere's drag equals its weight less its
 buoyancy, whatever the step. Cases: tests/sphereInBox.py."""
 
+from concurrent.futures import ThreadPoolExecutor
+
 import numpy as np
 import pytest
 
@@ -92,8 +94,12 @@ def settle(path, env, n, max_co, galileo=144, density_ratio=1.5):
 
 @pytest.fixture(scope="module")
 def free_sphere_at_galileo_144(tmp_path_factory, foam_env):
+    """The two steps' runs side by side, a core each."""
     path = tmp_path_factory.mktemp("galileo144")
-    return {co: settle(path / f"co{co:g}", foam_env, 6, co) for co in (0.5, 0.25)}
+    with ThreadPoolExecutor(2) as pool:
+        runs = {co: pool.submit(settle, path / f"co{co:g}", foam_env, 6, co)
+                for co in (0.5, 0.25)}
+    return {co: run.result() for co, run in runs.items()}
 
 
 def test_a_free_sphere_at_galileo_144_settles_at_a_speed_the_step_does_not_change(
@@ -133,16 +139,17 @@ def test_a_free_sphere_settles_where_the_held_spheres_drag_balances_its_weight(
 def test_a_free_sphere_falling_across_three_ranks_on_a_refining_mesh_moves_as_in_serial(
         tmp_path, foam_env):
     """Ga 144, a base of 6 cells per diameter refined once at the sphere,
-    4 diameters of fall through a box decomposed into 3 (metis, more ranks
-    than cores): the trajectory equals the serial one to 1e-6 (5e-13 m
-    measured), with the follow step moving the excess mass between cells
-    of different ranks."""
+    2.5 diameters of fall through a box decomposed into 3 (metis, more ranks
+    than cores: slabs 4 diameters tall, the sphere starting on the boundary
+    of two and leaving it): the trajectory equals the serial one to 1e-6
+    (5e-13 m measured over 4 diameters), with the follow step moving the
+    excess mass between cells of different ranks."""
     ug = gravitational_speed(1.5)
     histories = {}
     for ranks in (1, 3):
         case = sphere_in_box(Case(tmp_path / f"np{ranks}", foam_env), "free", 6, ug,
                              viscosity_for_galileo(144, 1.5), below=4, above=8,
-                             start_speed=1.05*ug, end_time=4*D/ug, levels=1)
+                             start_speed=1.05*ug, end_time=2.5*D/ug, levels=1)
         solution = case.path / "system" / "fvSolution"
         solution.write_text(solution.read_text()
                             .replace("tolerance 1e-8; relTol 0.01", "tolerance 1e-13; relTol 0")
@@ -154,5 +161,5 @@ def test_a_free_sphere_falling_across_three_ranks_on_a_refining_mesh_moves_as_in
             case.run("decomposePar")
         case.run("pimpleDLMFoam", np=ranks)
         histories[ranks] = case.history()["sphere"]
-    assert (histories[1][0, 3] - histories[1][-1, 3]) > 3.5*D
+    assert (histories[1][0, 3] - histories[1][-1, 3]) > 2*D
     assert_same_trajectory(histories[1], histories[3])
