@@ -46,7 +46,7 @@ def test_tutorial_scripts_find_the_project_and_edit_no_tracked_file():
     else a directory above it), refuses a case holding results, and each
     dictionary it sets entries of includes the generated file after its
     defaults; Allclean removes the generated files, and git ignores them."""
-    assert len(TUTORIALS) == 9 and len(SCRIPTS) == 12
+    assert len(TUTORIALS) == 10 and len(SCRIPTS) == 13
     for script in SCRIPTS:
         text = script.read_text()
         name = script.relative_to(ROOT)
@@ -178,6 +178,40 @@ def test_falling_disk_refined_in_the_plane_on_two_ranks_runs_reconstructs_and_cl
     boundary = (case / "0.2" / "polyMesh" / "boundary").read_text()
     plane = boundary[boundary.index("frontAndBack"):]
     assert int(re.search(r"nFaces\s+(\d+);", plane).group(1)) == 2*level.size
+    after = snapshot(case)
+    assert not [f for f, digest in before.items() if after.get(f) != digest]
+    assert run(case / "Allclean", env=foam_env).returncode == 0
+    assert snapshot(case) == before
+
+
+def test_settling_sphere_oblique_start_on_two_ranks_runs_reports_and_cleans(tmp_path, foam_env):
+    """tutorials/settlingSphere at Ga 200 (an oblique path), 4 cells per
+    diameter refined once, on 2 ranks for 0.03 s: the viscosity makes Ga
+    200, the sphere starts a quarter of the 6 d box off the axis moving
+    sideways at 0.1 u_g and down at 0.95 of the published speed
+    interpolated between Ga 190 and 250 (1.390 u_g), the mesh follows it,
+    the run is reported against Uhlmann & Dusek, the tracked files stay,
+    and Allclean restores the case."""
+    case = tmp_path / "settlingSphere"
+    shutil.copytree(ROOT / "tutorials" / "settlingSphere", case,
+                    ignore=shutil.ignore_patterns(*IGNORED))
+    before = snapshot(case)
+    result = run(case / "Allrun", 200, 4, 1, 2, 6, 0.03, env=foam_env)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "refined at the sphere's surface to 8 cells per diameter" in result.stdout
+    assert "Ga=200: u_V/u_g=" in result.stdout
+    ug = (0.5*9.81*0.01)**0.5
+    nu = float(re.search(r"nu\s+([0-9.e+-]+);",
+                         (case / "constant" / "transportProperties.Allrun").read_text()).group(1))
+    assert nu == pytest.approx(ug*0.01/200, rel=1e-5)
+    history = Case(case, foam_env).history()["sphere"]
+    assert history[0, 1] == pytest.approx(-0.015, abs=1e-4)
+    assert history[0, 4] > 0 and history[-1, 1] > history[0, 1]
+    assert -history[0, 6] == pytest.approx(0.95*1.39007*ug, rel=2e-3)
+    assert history[-1, 0] > 0.029
+    last = Case(case, foam_env).times()[-1]
+    assert Case(case, foam_env).internal_field(f"{last}/cellLevel").max() == 1
+    assert (case / "freeSphere.png").exists()
     after = snapshot(case)
     assert not [f for f, digest in before.items() if after.get(f) != digest]
     assert run(case / "Allclean", env=foam_env).returncode == 0
