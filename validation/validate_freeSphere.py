@@ -20,16 +20,20 @@ refines the sphere's surface band to N 2^L and its wake (vorticity above
 ahead by as many steps). --offset X starts the sphere X diameters off the
 axis along x and --lateral-speed V moving at V u_g along x (an oblique
 path's start, away from the nearer wall). Writes results/freeSphere.csv and a plot per run
-(results/freeSphere_Ga<Ga>_N<N>_L<L>_W<W>.png).
+(results/freeSphere_Ga<Ga>_N<N>_L<L>_W<W>_H<H>_Co<Co>_R<R>.png). With
+--case DIR it runs nothing: it reports the finished case DIR (the
+settlingSphere tutorial's) at --ga and plots it into DIR/freeSphere.png.
 
     validation/validate_freeSphere.py [--ga 144,178.46] [--levels 2]
         [--width 6] [--height 30] [--max-co 0.5] [--np 1]
         [--refine-interval 3] [--offset 0] [--lateral-speed 0] [N ...]
         (default N = 4)
+    validation/validate_freeSphere.py --ga 144 --case tutorials/settlingSphere
 """
 
 import argparse
 import math
+import pathlib
 import re
 import shutil
 
@@ -43,7 +47,7 @@ TABLE = RESULTS / "freeSphere.csv"
 HEADER = ["Ga", "baseCellsPerDiameter", "levels", "surfaceCellsPerDiameter", "widthD",
           "heightD", "maxCo", "refineInterval", "uV_ug", "uV_reference", "uV_error", "uV_drift",
           "uH_ug", "uH_reference", "angle_deg", "angle_reference", "frequency",
-          "wallTime_s", "steps", "lastCells", "meshChangeShare"]
+          "wallTime_s", "steps", "lastCells", "meshChangeShare", "surfaceBandCells"]
 DENSITY_RATIO = 1.5
 
 
@@ -131,10 +135,15 @@ def main():
     parser.add_argument("--refine-interval", type=int, default=3)
     parser.add_argument("--offset", type=float, default=0)
     parser.add_argument("--lateral-speed", type=float, default=0)
+    parser.add_argument("--surface-cells", type=int, default=3)
+    parser.add_argument("--case", type=pathlib.Path)
     parser.add_argument("resolutions", nargs="*", type=int, default=[4])
     args = parser.parse_args()
 
     env = foam_environment()
+    if args.case:
+        analyse_case(args.case, float(args.ga), env)
+        return
     RESULTS.mkdir(parents=True, exist_ok=True)
     ug = gravitational_speed(DENSITY_RATIO)
     for galileo in [float(g) for g in args.ga.split(",")]:
@@ -143,7 +152,8 @@ def main():
             name = (f"freeSphere_Ga{galileo:g}_N{n}_L{args.levels}_W{args.width:g}"
                     f"_H{args.height:g}_Co{args.max_co:g}_R{args.refine_interval}"
                     + (f"_X{args.offset:g}_V{args.lateral_speed:g}"
-                       if args.offset or args.lateral_speed else ""))
+                       if args.offset or args.lateral_speed else "")
+                    + (f"_S{args.surface_cells}" if args.surface_cells != 3 else ""))
             case = Case(RUNS / name, env)
             if case.path.exists():
                 shutil.rmtree(case.path)
@@ -155,7 +165,8 @@ def main():
                           max_co=args.max_co, levels=args.levels, start_speed=start,
                           end_time=(args.height - 8)*D/(ref_v*ug),
                           refine_interval=args.refine_interval, offset=args.offset,
-                          lateral_speed=args.lateral_speed*ug)
+                          lateral_speed=args.lateral_speed*ug,
+                          surface_cells=args.surface_cells)
             case.run("blockMesh")
             if args.np > 1:
                 case.set("system/decomposeParDict", "numberOfSubdomains", args.np)
@@ -165,19 +176,41 @@ def main():
             u_v, u_h, angle, drift, frequency = analyse(history, ug)
             log = (case.path / "log.pimpleDLMFoam").read_text()
             cells, share = mesh_changes(log)
-            error = u_v/ref_v - 1
             merge_row(TABLE, HEADER,
                       [galileo, n, args.levels, n << args.levels, args.width, args.height,
-                       args.max_co, args.refine_interval, u_v, ref_v, error, drift, u_h, ref_h, angle, ref_angle,
-                       frequency, seconds, len(history), cells or 0, share],
-                      key_columns=[0, 1, 2, 4, 5, 6, 7])
+                       args.max_co, args.refine_interval, u_v, ref_v, u_v/ref_v - 1, drift,
+                       u_h, ref_h, angle, ref_angle, frequency, seconds, len(history),
+                       cells or 0, share, args.surface_cells],
+                      key_columns=[0, 1, 2, 4, 5, 6, 7, 21])
             plot(history, ug, galileo, ref_v, RESULTS / f"{name}.png")
             print(f"Ga={galileo:g} N={n} L={args.levels} W={args.width:g}: "
-                  f"u_V/u_g={u_v:.4f} (Uhlmann & Dusek {ref_v:.4f}, {100*error:+.2f} %, "
-                  f"drift {100*drift:+.2f} %), u_H/u_g={u_h:.4f} ({ref_h:.4f}), "
-                  f"angle {angle:.2f} deg ({ref_angle:.2f}), f d/u_g={frequency:.4f}, "
-                  f"wall {seconds:.0f} s, {len(history)} steps, cells {cells}, "
-                  f"mesh changes {share:.0f} %", flush=True)
+                  + summary(history, galileo, log, seconds), flush=True)
+
+
+def summary(history, galileo, log, seconds):
+    """The run's speeds, angle and frequency against Uhlmann & Dusek's, its
+    cost and the mesh changes' share, on one line."""
+    ref_v, ref_h, ref_angle = reference(galileo)
+    u_v, u_h, angle, drift, frequency = analyse(history, gravitational_speed(DENSITY_RATIO))
+    cells, share = mesh_changes(log)
+    return (f"u_V/u_g={u_v:.4f} (Uhlmann & Dusek {ref_v:.4f}, {100*(u_v/ref_v - 1):+.2f} %, "
+            f"drift {100*drift:+.2f} %), u_H/u_g={u_h:.4f} ({ref_h:.4f}), "
+            f"angle {angle:.2f} deg ({ref_angle:.2f}), f d/u_g={frequency:.4f}, "
+            f"wall {seconds:.0f} s, {len(history)} steps, cells {cells}, "
+            f"mesh changes {share:.0f} %")
+
+
+def analyse_case(path, galileo, env):
+    """Report a finished case (the settlingSphere tutorial's) and plot it
+    into the case as freeSphere.png."""
+    case = Case(path, env)
+    history = case.history()["sphere"]
+    log = (case.path / "log.pimpleDLMFoam").read_text()
+    clock = re.findall(r"ClockTime = ([0-9.e+-]+) s", log)
+    print(f"Ga={galileo:g}: " + summary(history, galileo, log,
+                                         float(clock[-1]) if clock else math.nan))
+    plot(history, gravitational_speed(DENSITY_RATIO), galileo, reference(galileo)[0],
+         case.path / "freeSphere.png")
 
 
 if __name__ == "__main__":
