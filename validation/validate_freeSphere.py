@@ -136,6 +136,7 @@ def main():
     parser.add_argument("--offset", type=float, default=0)
     parser.add_argument("--lateral-speed", type=float, default=0)
     parser.add_argument("--surface-cells", type=int, default=3)
+    parser.add_argument("--prescribed-start", type=float, default=0)
     parser.add_argument("--case", type=pathlib.Path)
     parser.add_argument("resolutions", nargs="*", type=int, default=[4])
     args = parser.parse_args()
@@ -153,26 +154,39 @@ def main():
                     f"_H{args.height:g}_Co{args.max_co:g}_R{args.refine_interval}"
                     + (f"_X{args.offset:g}_V{args.lateral_speed:g}"
                        if args.offset or args.lateral_speed else "")
-                    + (f"_S{args.surface_cells}" if args.surface_cells != 3 else ""))
+                    + (f"_S{args.surface_cells}" if args.surface_cells != 3 else "")
+                    + (f"_P{args.prescribed_start:g}" if args.prescribed_start else ""))
             case = Case(RUNS / name, env)
             if case.path.exists():
                 shutil.rmtree(case.path)
             case.path.mkdir(parents=True)
-            start = 0.95*ref_v*ug
+            end_time = (args.height - 8)*D/(ref_v*ug)
+            release = args.prescribed_start*D/(ref_v*ug)
+            if release:
+                # The published motion, its wake forming, then free
+                start, lateral = ref_v*ug, (0 if math.isnan(ref_h) else ref_h)*ug
+            else:
+                start, lateral = 0.95*ref_v*ug, args.lateral_speed*ug
             sphere_in_box(case, "free", n, ref_v*ug,
                           viscosity_for_galileo(galileo, DENSITY_RATIO), DENSITY_RATIO,
                           width=args.width, below=4, above=args.height - 4,
                           max_co=args.max_co, levels=args.levels, start_speed=start,
-                          end_time=(args.height - 8)*D/(ref_v*ug),
+                          end_time=release or end_time, write_interval=release or None,
                           refine_interval=args.refine_interval, offset=args.offset,
-                          lateral_speed=args.lateral_speed*ug,
-                          surface_cells=args.surface_cells)
+                          lateral_speed=lateral, surface_cells=args.surface_cells)
+            if release:
+                prescribe(case, True)
             case.run("blockMesh")
             if args.np > 1:
                 case.set("system/decomposeParDict", "numberOfSubdomains", args.np)
                 case.run("decomposePar")
             seconds = timed_run(case, "pimpleDLMFoam", np=args.np)
-            history = case.history()["sphere"]
+            if release:
+                released = release_sphere(case, args.np, end_time)
+                seconds += timed_run(case, "pimpleDLMFoam", np=args.np)
+                history = case.history(released)["sphere"]
+            else:
+                history = case.history()["sphere"]
             u_v, u_h, angle, drift, frequency = analyse(history, ug)
             log = (case.path / "log.pimpleDLMFoam").read_text()
             cells, share = mesh_changes(log)
@@ -185,6 +199,33 @@ def main():
             plot(history, ug, galileo, ref_v, RESULTS / f"{name}.png")
             print(f"Ga={galileo:g} N={n} L={args.levels} W={args.width:g}: "
                   + summary(history, galileo, log, seconds), flush=True)
+
+
+def prescribe(case, prescribed):
+    """The sphere's motion in constant/particleProperties: prescribed at
+    its start velocity, or free."""
+    path = case.path / "constant" / "particleProperties"
+    text = path.read_text().replace("motion prescribed; ", "")
+    if prescribed:
+        text = text.replace("velocity (", "motion prescribed; velocity (", 1)
+    path.write_text(text)
+
+
+def release_sphere(case, ranks, end_time):
+    """Make the prescribed sphere free from the last written time on (the
+    input and the written state alike) and run to end_time: returns that
+    time's name."""
+    prescribe(case, False)
+    released = case.times()[-1]
+    states = [case.path / released / "uniform" / "particles"] + [
+        processor / released / "uniform" / "particles"
+        for processor in case.path.glob("processor*")]
+    for state in states:
+        if state.exists():
+            state.write_text(re.sub(r"motion\s+prescribed;", "motion free;", state.read_text()))
+    case.set("system/controlDict", "endTime", end_time)
+    case.set("system/controlDict", "writeInterval", end_time)
+    return released
 
 
 def summary(history, galileo, log, seconds):
