@@ -42,12 +42,12 @@ def sphere_in_box(case, mode, n, speed, nu, density_ratio=1.5, width=4,
                   below=6, above=12, end_time=None, max_co=0.5, levels=0,
                   convection="Gauss LUST grad(U)", start_speed=None,
                   write_interval=None, refine_interval=3, offset=0.0, lateral_speed=0.0,
-                   surface_cells=3):
+                  surface_cells=3):
     """Write the case (blockMesh still to run): n cells per diameter on the
     base mesh, with levels of refinement at the sphere's surface (its wake
     one level less; the surface's band surface_cells cells of the finest
-    level wide outside it, besides its look-ahead). "held": the box spans below and above diameters about
-    the sphere; "prescribed" and "free": it is below + above diameters
+    level wide outside it, besides its look-ahead). "held": the box spans
+    below and above diameters about the sphere; "prescribed" and "free": it is below + above diameters
     tall, the sphere starting 4 diameters under its lid. end_time defaults
     to the time the sphere moves, or the fluid passes it, by 3/4 of the
     box's height less 5 diameters. A free sphere may start offset diameters

@@ -191,11 +191,16 @@ def test_settling_sphere_oblique_start_on_two_ranks_runs_reports_and_cleans(tmp_
     sideways at 0.1 u_g and down at 0.95 of the published speed
     interpolated between Ga 190 and 250 (1.390 u_g), the mesh follows it,
     the run is reported against Uhlmann & Dusek, the tracked files stay,
-    and Allclean restores the case."""
+    and Allclean restores the case. A Galileo number that is not a positive
+    number is refused by name before anything is written."""
     case = tmp_path / "settlingSphere"
     shutil.copytree(ROOT / "tutorials" / "settlingSphere", case,
                     ignore=shutil.ignore_patterns(*IGNORED))
     before = snapshot(case)
+    refused = run(case / "Allrun", "-144", env=foam_env)
+    assert refused.returncode != 0
+    assert "Ga '-144'" in refused.stderr and "must be positive numbers" in refused.stderr
+    assert snapshot(case) == before
     result = run(case / "Allrun", 200, 4, 1, 2, 6, 0.03, env=foam_env)
     assert result.returncode == 0, result.stdout + result.stderr
     assert "refined at the sphere's surface to 8 cells per diameter" in result.stdout

@@ -429,11 +429,15 @@ def viscous_limit():
 def free_sphere():
     recommended = one("freeSphere.csv", Ga=144, baseCellsPerDiameter=4, widthD=10,
                       refineInterval=20, surfaceBandCells=3)
+    oblique = one("freeSphere.csv", Ga=178.46, baseCellsPerDiameter=4, widthD=10,
+                  refineInterval=20)
     return ("free sphere, Re 185-365", "terminal speed, path",
             "Uhlmann & Dusek (2014)", "2 % (Ga 144, 178)",
             f"Ga 144: {pct(recommended['uV_error'], 1)} at 16 cells per diameter at the"
             f" surface, box 10 d wide (mesh changes {recommended['meshChangeShare']:.0f} %"
-            " of the run); Ga 178 +0.5 %, its oblique angle not reached", duration(recommended["wallTime_s"]), "freeSphere")
+            f" of the run); Ga 178 {pct(oblique['uV_error'], 1)}, its oblique angle not"
+            f" reached ({oblique['angle_deg']:.1f} against {oblique['angle_reference']:.1f}"
+            " degrees)", duration(recommended["wallTime_s"]), "freeSphere")
 
 
 ROWS = [disk_stokes, ten_cate, duct_sphere, ten_cate_refined, falling_disk, dkt_refined,

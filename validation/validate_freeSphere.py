@@ -10,8 +10,8 @@ published speed less 5 % (an impulsive start, so that the wake forms
 within a few diameters) 4 diameters under the lid. After the first third
 of the fall (the start-up), the mean vertical speed u_V is the fall's
 displacement over its time, the mean horizontal speed u_H the lateral
-displacement's over the last third, the angle atan(u_H/u_V); for Ga 190 and 250 the dominant
-frequency of the lateral velocity as f d/u_g. Reported: each against the
+displacement's over the last third, the angle atan(u_H/u_V); for Ga 190
+and 250 the dominant frequency of the lateral velocity as f d/u_g. Reported: each against the
 published (large domain), the drift of u_V over the last third against
 the middle third, the wall time, the steps, the cells and the share of
 the mesh changes. N is the base mesh's cells per diameter; --levels L
@@ -19,14 +19,19 @@ refines the sphere's surface band to N 2^L and its wake (vorticity above
 0.2 U/R) to N 2^(L-1), every --refine-interval steps (3; the band looks
 ahead by as many steps). --offset X starts the sphere X diameters off the
 axis along x and --lateral-speed V moving at V u_g along x (an oblique
-path's start, away from the nearer wall). Writes results/freeSphere.csv and a plot per run
+path's start, away from the nearer wall); --prescribed-start P moves it at
+the published velocity for P diameters, then frees it (analysed over the
+free part). --surface-cells B sets the surface band's width outside the
+surface (3 cells of the finest level). Writes results/freeSphere.csv and
+a plot per run
 (results/freeSphere_Ga<Ga>_N<N>_L<L>_W<W>_H<H>_Co<Co>_R<R>.png). With
 --case DIR it runs nothing: it reports the finished case DIR (the
 settlingSphere tutorial's) at --ga and plots it into DIR/freeSphere.png.
 
     validation/validate_freeSphere.py [--ga 144,178.46] [--levels 2]
         [--width 6] [--height 30] [--max-co 0.5] [--np 1]
-        [--refine-interval 3] [--offset 0] [--lateral-speed 0] [N ...]
+        [--refine-interval 3] [--offset 0] [--lateral-speed 0]
+        [--prescribed-start 0] [--surface-cells 3] [N ...]
         (default N = 4)
     validation/validate_freeSphere.py --ga 144 --case tutorials/settlingSphere
 """
@@ -182,12 +187,13 @@ def main():
                 case.run("decomposePar")
             seconds = timed_run(case, "pimpleDLMFoam", np=args.np)
             if release:
-                released = release_sphere(case, args.np, end_time)
+                released = release_sphere(case, end_time)
                 seconds += timed_run(case, "pimpleDLMFoam", np=args.np)
                 history = case.history(released)["sphere"]
             else:
                 history = case.history()["sphere"]
-            u_v, u_h, angle, drift, frequency = analyse(history, ug)
+            measured = analyse(history, ug)
+            u_v, u_h, angle, drift, frequency = measured
             log = (case.path / "log.pimpleDLMFoam").read_text()
             cells, share = mesh_changes(log)
             merge_row(TABLE, HEADER,
@@ -198,7 +204,8 @@ def main():
                       key_columns=[0, 1, 2, 4, 5, 6, 7, 21])
             plot(history, ug, galileo, ref_v, RESULTS / f"{name}.png")
             print(f"Ga={galileo:g} N={n} L={args.levels} W={args.width:g}: "
-                  + summary(history, galileo, log, seconds), flush=True)
+                  + summary(galileo, measured, cells, share, len(history), seconds),
+                  flush=True)
 
 
 def prescribe(case, prescribed):
@@ -211,7 +218,7 @@ def prescribe(case, prescribed):
     path.write_text(text)
 
 
-def release_sphere(case, ranks, end_time):
+def release_sphere(case, end_time):
     """Make the prescribed sphere free from the last written time on (the
     input and the written state alike) and run to end_time: returns that
     time's name."""
@@ -228,16 +235,15 @@ def release_sphere(case, ranks, end_time):
     return released
 
 
-def summary(history, galileo, log, seconds):
-    """The run's speeds, angle and frequency against Uhlmann & Dusek's, its
-    cost and the mesh changes' share, on one line."""
+def summary(galileo, measured, cells, share, steps, seconds):
+    """The run's speeds, angle and frequency (analyse()'s) against Uhlmann
+    & Dusek's, its cost and the mesh changes' share, on one line."""
     ref_v, ref_h, ref_angle = reference(galileo)
-    u_v, u_h, angle, drift, frequency = analyse(history, gravitational_speed(DENSITY_RATIO))
-    cells, share = mesh_changes(log)
+    u_v, u_h, angle, drift, frequency = measured
     return (f"u_V/u_g={u_v:.4f} (Uhlmann & Dusek {ref_v:.4f}, {100*(u_v/ref_v - 1):+.2f} %, "
             f"drift {100*drift:+.2f} %), u_H/u_g={u_h:.4f} ({ref_h:.4f}), "
             f"angle {angle:.2f} deg ({ref_angle:.2f}), f d/u_g={frequency:.4f}, "
-            f"wall {seconds:.0f} s, {len(history)} steps, cells {cells}, "
+            f"wall {seconds:.0f} s, {steps} steps, cells {cells}, "
             f"mesh changes {share:.0f} %")
 
 
@@ -246,12 +252,12 @@ def analyse_case(path, galileo, env):
     into the case as freeSphere.png."""
     case = Case(path, env)
     history = case.history()["sphere"]
+    ug = gravitational_speed(DENSITY_RATIO)
     log = (case.path / "log.pimpleDLMFoam").read_text()
     clock = re.findall(r"ClockTime = ([0-9.e+-]+) s", log)
-    print(f"Ga={galileo:g}: " + summary(history, galileo, log,
-                                         float(clock[-1]) if clock else math.nan))
-    plot(history, gravitational_speed(DENSITY_RATIO), galileo, reference(galileo)[0],
-         case.path / "freeSphere.png")
+    print(f"Ga={galileo:g}: " + summary(galileo, analyse(history, ug), *mesh_changes(log),
+                                         len(history), float(clock[-1]) if clock else math.nan))
+    plot(history, ug, galileo, reference(galileo)[0], case.path / "freeSphere.png")
 
 
 if __name__ == "__main__":
