@@ -3,6 +3,7 @@ a cell into 4 in the plane and merges them back, serial and parallel."""
 import math
 import pathlib
 import re
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import pytest
@@ -359,3 +360,35 @@ particles
     assert band.sum() > 300
     error = np.abs(U[band] - np.column_stack([0*C[band, 0], shear*(C[band, 0] - x0), 0*C[band, 0]]))
     assert error.max() < 1e-5*shear*h
+
+
+def test_how_often_the_mesh_changes_leaves_a_disk_settling_at_re_2000_as_it_was(
+        tmp_path, foam_env):
+    """tutorials/fallingDisk at Re about 2000 (nu 1e-6) on a base of 4 cells
+    per diameter refined to 16 at the disk's surface, 8 in its wake, the
+    mesh changed every step and every 10 steps: the settling speeds at 0.3 s
+    agree within 1 %. A change keeps the flow's last increment for the
+    flux's extrapolation (updateMesh.H); dropping it, the step after each
+    change convected with the last step's flux, and the disk changed every
+    step settled 1.7 % slower than every 3 steps (0.4 % now; 0.63 %
+    between every step and every 10th)."""
+    def settle(interval):
+        case = Case.copy(DISK, tmp_path / f"interval{interval}", foam_env)
+        mesh = case.path / "system" / "blockMeshDict"
+        mesh.write_text(mesh.read_text().replace("nx  80;", "nx  40;")
+                        .replace("ny  160;", "ny  80;"))
+        case.set("constant/transportProperties", "nu", 1e-6)
+        refine = (case.path / "constant" / "dynamicMeshDict.refine").read_text()
+        (case.path / "constant" / "dynamicMeshDict").write_text(
+            refine.replace("refineInterval  3;", f"refineInterval  {interval};"))
+        case.set("system/controlDict", "endTime", 0.3)
+        case.run("blockMesh")
+        case.run("pimpleDLMFoam")
+        history = case.history()["disk"]
+        return -np.interp(0.3, history[:, 0], history[:, 5]), cell_counts(case)
+
+    with ThreadPoolExecutor(2) as pool:
+        (every, every_counts), (tenth, tenth_counts) = pool.map(settle, [1, 10])
+    assert len(every_counts) > 5*len(tenth_counts) > 25
+    assert 0.2 < tenth < 0.24
+    assert every == pytest.approx(tenth, rel=0.01)

@@ -268,7 +268,12 @@ void Foam::fv::rigidProjection::followParticles
     // With a second-order time derivative (backward) the momentum equation
     // also takes the last step's velocity with the new densities: the mass
     // moved carries its momentum there too
-    const bool olderLevel = U.nOldTimes() > 1;
+    // (a restart that read U_0 holds an older level whatever the scheme)
+    const ITstream& ddtScheme = mesh_.ddtScheme("ddt(" + U.name() + ')');
+    const bool olderLevel =
+        U.nOldTimes() > 1
+     && ddtScheme.size() && ddtScheme[0].isWord()
+     && ddtScheme[0].wordToken() == "backward";
     vectorField changeOld(olderLevel ? mesh_.nCells() : 0, Zero);
     const vectorField& u0 =
         olderLevel ? U.oldTime().primitiveField() : U.primitiveField();
