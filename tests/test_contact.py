@@ -4,6 +4,7 @@ roll and a sphere roll down a slope without slipping, restart in the middle
 of a contact, and the same contact forces on 1 and 2 processors."""
 
 import math
+import re
 import pathlib
 import shutil
 
@@ -481,6 +482,42 @@ def test_parallel_binary_restart_within_a_wet_contact(tmp_path, foam_env):
     assert len(b) == len(tail) >= 5
     assert np.abs(b[:, 1:10] - tail[:, 1:10]).max() < 1e-12
     assert np.abs(b[:, 16:] - tail[:, 16:]).max() < 1e-9*np.abs(tail[:, 16:]).max()
+
+
+def test_restart_in_water_with_an_adjustable_step_takes_the_steps_of_the_uninterrupted_run(
+        tmp_path, foam_env):
+    """The landing in water (nu 1e-6) with adjustTimeStep, the step set by
+    the particle's Courant number, which counts the surface speed of a
+    particle near a contact twice: restarted from 0.04 s, the sphere
+    pressed on the floor after its bounce, the run takes the same steps and trajectory to the next
+    written time as the uninterrupted one. The written state holds which
+    particles were near a contact (nearContact); without it the restart's
+    first step was 0.005 s where the uninterrupted run took 0.0033 s."""
+    def make(name):
+        case = landing_case(tmp_path, foam_env, name)
+        case.set("constant/transportProperties", "nu", 1e-6)
+        for entry, value in {"endTime": 0.05, "adjustTimeStep": "yes",
+                             "deltaT": 0.001, "maxDeltaT": 0.005,
+                             "writeControl": "adjustableRunTime",
+                             "writeInterval": 0.01}.items():
+            case.set("system/controlDict", entry, value)
+        return case
+
+    full = make("full")
+    full.run("pimpleDLMFoam")
+    a = full.history()["sphere"]
+    state = (full.path / "0.04" / "uniform" / "particles").read_text()
+    assert re.search(r"nearContact\s+1\(0\);", state)
+    restarted = make("restarted")
+    shutil.copytree(full.path / "0.04", restarted.path / "0.04")
+    restarted.run("pimpleDLMFoam")
+    b = restarted.history("0.04")["sphere"]
+    tail = a[a[:, 0] > 0.04 + 1e-9]
+    assert len(b) == len(tail) == 3
+    assert np.abs(b[:, 0] - tail[:, 0]).max() < 1e-12
+    assert np.abs(b[:, 1:10] - tail[:, 1:10]).max() < 1e-12
+    # In contact with the floor throughout the restarted part
+    assert np.abs(tail[:, 18]).min() > 0
 
 
 @pytest.mark.parametrize("interval", [0, 5])

@@ -1185,6 +1185,22 @@ Foam::particleContact::particleContact
     // A restarted run's last sub-step (the corrections of the first
     // evaluation take it) and tangential history
     state.readIfPresent("lastContactSubStep", lastSubStep_);
+    labelList near;
+    if (state.readIfPresent("nearContact", near))
+    {
+        involved_.setSize(particles.size());
+        involved_ = false;
+        for (const label i : near)
+        {
+            if (i < 0 || i >= particles.size())
+            {
+                FatalIOErrorInFunction(state)
+                    << "nearContact names particle " << i << " of "
+                    << particles.size() << exit(FatalIOError);
+            }
+            involved_[i] = true;
+        }
+    }
     if (state.found("contacts"))
     {
         const List<Tuple2<contactKey, vector>> saved
@@ -1539,6 +1555,18 @@ void Foam::particleContact::write(Ostream& os) const
     }
     os.writeEntry("contacts", saved);
     os.writeEntry("lastContactSubStep", lastSubStep_);
+
+    // The particles near a contact in the last step: the next step's size
+    // counts their surface speed twice (dlmParticleCloud::courantNumber)
+    DynamicList<label> near;
+    forAll(involved_, i)
+    {
+        if (involved_[i])
+        {
+            near.append(i);
+        }
+    }
+    os.writeEntry("nearContact", near);
 }
 
 
