@@ -387,3 +387,46 @@ def test_a_zero_time_step_set_while_running_stops_with_an_error(tmp_path, foam_e
     assert returncode > 0
     assert "deltaT 0 must be positive" in text and "controlDict" in text
     assert "sigHandler" not in text
+
+
+def test_a_rank_one_cell_thick_between_two_others_leaves_the_serial_trajectory_unchanged(
+        tmp_path, foam_env):
+    """The settling sphere (6 cells per diameter) on 3 ranks decomposed by
+    hand: the middle rank one cell thick along x, beside the sphere's
+    surface, so that the profiles of forced cells on the first rank take
+    their second sample on the third. Relayed through the middle rank,
+    the trajectory is the serial one to round-off (8e-15 m measured); the
+    sample lost, the profile there fell back to linear and the sphere was
+    2e-5 m and 8e-4 m/s off after 20 steps."""
+    def make(name):
+        case = sphere_case(tmp_path, foam_env, name, settings={
+            ("constant/transportProperties", "nu"): 1e-5,
+            ("constant/particleProperties", "particles/sphere/position"):
+                "(0.0082 0.0149 0.025)",
+            ("system/controlDict", "endTime"): 0.05,
+            ("system/controlDict", "deltaT"): 0.0025})
+        case.converge_linear_solvers()
+        return case
+
+    serial = make("serial")
+    serial.run("pimpleDLMFoam")
+    slab = make("slab")
+    # blockMesh numbers the 18 x 18 x 27 cells x first
+    owner = [0 if c % 18 < 8 else 1 if c % 18 == 8 else 2 for c in range(18*18*27)]
+    (slab.path / "constant" / "cellDecomposition").write_text(
+        "FoamFile { version 2.0; format ascii; class labelList;"
+        " object cellDecomposition; }\n"
+        f"{len(owner)}\n(\n" + "\n".join(map(str, owner)) + "\n)\n")
+    (slab.path / "system" / "decomposeParDict").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary;"
+        " object decomposeParDict; }\n"
+        "numberOfSubdomains 3;\nmethod manual;\n"
+        "manualCoeffs { dataFile \"cellDecomposition\"; }\n")
+    slab.run("decomposePar")
+    slab.run("pimpleDLMFoam", np=3)
+
+    a, b = serial.history()["sphere"], slab.history()["sphere"]
+    assert len(a) == len(b) == 20
+    assert a[-1, 6] < -0.1
+    assert np.abs(b[:, 1:4] - a[:, 1:4]).max() < 1e-12
+    assert np.abs(b[:, 4:7] - a[:, 4:7]).max() < 1e-10

@@ -9,6 +9,7 @@
 #include "syncTools.H"
 #include "emptyFvPatch.H"
 #include "cyclicPolyPatch.H"
+#include "processorPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -50,7 +51,7 @@ void Foam::forcedRegions::setMeshGeometry()
         labelList* faceList :
         {
             &insideAcross_, &insideSecondLayer_, &nextToAcross_,
-            &nextToSecondLayer_, &secondLayerCell_
+            &nextToSecondLayer_, &secondLayerCell_, &secondLayerRelay_
         }
     )
     {
@@ -83,7 +84,9 @@ void Foam::forcedRegions::setMeshGeometry()
     // and its offset; the offsets of the other side of coupled faces. The
     // cell behind may lie across a cyclic patch of this processor (a
     // processor boundary next to a cyclic one: without it the profile
-    // there lost its second sample, which the serial run has)
+    // there lost its second sample, which the serial run has), or across
+    // another processor face, on a third rank where this rank's subdomain
+    // is a cell thick: its value is relayed (exchangeAcross)
     const vectorField& C = mesh_.C();
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     forAll(secondLayerCell_, bFacei)
@@ -95,6 +98,7 @@ void Foam::forcedRegions::setMeshGeometry()
         for (const label facej : mesh_.cells()[celli])
         {
             label cellj = -1;
+            label relay = -1;
             vector d(Zero);
             if (mesh_.isInternalFace(facej))
             {
@@ -107,16 +111,21 @@ void Foam::forcedRegions::setMeshGeometry()
             else
             {
                 const label patchj = patches.whichPatch(facej);
+                const label localFacej = facej - patches[patchj].start();
                 if (isA<cyclicPolyPatch>(patches[patchj]))
                 {
-                    const label localFacej = facej - patches[patchj].start();
                     cellj =
                         refCast<const cyclicPolyPatch>(patches[patchj])
                        .neighbPatch().faceCells()[localFacej];
                     d = coupledDeltas_[patchj][localFacej];
                 }
+                else if (isA<processorPolyPatch>(patches[patchj]))
+                {
+                    relay = facej - mesh_.nInternalFaces();
+                    d = coupledDeltas_[patchj][localFacej];
+                }
             }
-            if (cellj < 0)
+            if (cellj < 0 && relay < 0)
             {
                 continue;
             }
@@ -125,6 +134,7 @@ void Foam::forcedRegions::setMeshGeometry()
             {
                 bestCos = c;
                 secondLayerCell_[bFacei] = cellj;
+                secondLayerRelay_[bFacei] = relay;
                 secondLayerDelta_[bFacei] = d;
             }
         }
@@ -133,7 +143,9 @@ void Foam::forcedRegions::setMeshGeometry()
     labelList hasSecondLayer(mesh_.nBoundaryFaces());
     forAll(hasSecondLayer, bFacei)
     {
-        hasSecondLayer[bFacei] = secondLayerCell_[bFacei] >= 0 ? 1 : 0;
+        hasSecondLayer[bFacei] =
+            secondLayerCell_[bFacei] >= 0 || secondLayerRelay_[bFacei] >= 0
+          ? 1 : 0;
     }
     syncTools::swapBoundaryFaceList(mesh_, hasSecondLayer);
     forAll(hasSecondLayer, bFacei)
@@ -213,10 +225,18 @@ void Foam::forcedRegions::exchangeAcross
     syncTools::swapBoundaryCellList(mesh_, cellValues, across);
     forAll(secondLayer, bFacei)
     {
-        secondLayer[bFacei] =
-            secondLayerCell_[bFacei] >= 0
-          ? cellValues[secondLayerCell_[bFacei]]
-          : -1;
+        if (secondLayerCell_[bFacei] >= 0)
+        {
+            secondLayer[bFacei] = cellValues[secondLayerCell_[bFacei]];
+        }
+        else if (secondLayerRelay_[bFacei] >= 0)
+        {
+            secondLayer[bFacei] = across[secondLayerRelay_[bFacei]];
+        }
+        else
+        {
+            secondLayer[bFacei] = -1;
+        }
     }
     syncTools::swapBoundaryFaceList(mesh_, secondLayer);
 }
@@ -911,11 +931,25 @@ Foam::forcedRegions::sampledVelocities(const volVectorField& U) const
     // Second-layer values across coupled faces: each side sends the value
     // of the cell behind each of its coupled faces
     vectorField secondLayerU(mesh_.nBoundaryFaces(), Zero);
+    vectorField uAcross;
+    bool relayed = false;
+    for (const label relay : secondLayerRelay_)
+    {
+        relayed = relayed || relay >= 0;
+    }
+    if (returnReduce(relayed, orOp<bool>()))
+    {
+        syncTools::swapBoundaryCellList(mesh_, u, uAcross);
+    }
     forAll(secondLayerU, bFacei)
     {
         if (secondLayerCell_[bFacei] >= 0)
         {
             secondLayerU[bFacei] = u[secondLayerCell_[bFacei]];
+        }
+        else if (secondLayerRelay_[bFacei] >= 0)
+        {
+            secondLayerU[bFacei] = uAcross[secondLayerRelay_[bFacei]];
         }
     }
     syncTools::swapBoundaryFaceList(mesh_, secondLayerU);
