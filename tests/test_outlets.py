@@ -80,7 +80,8 @@ def outlet_state(case, time):
 def without_particle(state, name):
     """The particle state file's text without a particle: its block goes,
     the contacts' springs keyed by it go, and the particles after it move
-    up a place (a key is particle, other particle or -1 - wall, feature)."""
+    up a place (a key is particle, other particle or -1 - wall, feature),
+    in the springs and in the list of particles near a contact."""
     names = re.findall(r"^    (\w+)\n    \{", state, re.M)
     gone = names.index(name)
     state = re.sub(rf"^    {name}\n    \{{.*?^    \}}\n", "", state, flags=re.M | re.S)
@@ -94,8 +95,14 @@ def without_particle(state, name):
         i, j = int(i), int(j)
         if gone not in (i, j):
             springs.append(f"(({place(i)} {place(j) if j >= 0 else j} {feature}) {spring})")
-    return re.sub(r"^contacts\s+\d+\s*\(.*?^\)", "contacts\n%d\n(\n%s\n)"
-                  % (len(springs), "\n".join(springs)), state, flags=re.M | re.S)
+    state = re.sub(r"^contacts\s+\d+\s*\(.*?^\)", "contacts\n%d\n(\n%s\n)"
+                   % (len(springs), "\n".join(springs)), state, flags=re.M | re.S)
+
+    def near(match):
+        kept = [place(int(k)) for k in match.group(1).split() if int(k) != gone]
+        return "nearContact %d(%s);" % (len(kept), " ".join(map(str, kept)))
+    return re.sub(r"^nearContact\s+\d*\s*\(([^()]*)\)\s*;", near, state,
+                  flags=re.M | re.S)
 
 
 def test_outlet_removes_and_counts_without_changing_the_others(tmp_path, foam_env):
