@@ -24,7 +24,8 @@ namespace
 
 Foam::forcedRegions::forcedRegions(const fvMesh& mesh)
 :
-    mesh_(mesh)
+    mesh_(mesh),
+    relayed_(false)
 {
     setMeshGeometry();
 }
@@ -152,6 +153,12 @@ void Foam::forcedRegions::setMeshGeometry()
     {
         secondLayerAcross_[bFacei] = hasSecondLayer[bFacei] > 0;
     }
+    relayed_ = false;
+    for (const label relay : secondLayerRelay_)
+    {
+        relayed_ = relayed_ || relay >= 0;
+    }
+    reduce(relayed_, orOp<bool>());
 }
 
 
@@ -932,12 +939,7 @@ Foam::forcedRegions::sampledVelocities(const volVectorField& U) const
     // of the cell behind each of its coupled faces
     vectorField secondLayerU(mesh_.nBoundaryFaces(), Zero);
     vectorField uAcross;
-    bool relayed = false;
-    for (const label relay : secondLayerRelay_)
-    {
-        relayed = relayed || relay >= 0;
-    }
-    if (returnReduce(relayed, orOp<bool>()))
+    if (relayed_)
     {
         syncTools::swapBoundaryCellList(mesh_, u, uAcross);
     }
