@@ -42,7 +42,7 @@ def sphere_in_box(case, mode, n, speed, nu, density_ratio=1.5, width=4,
                   below=6, above=12, end_time=None, max_co=0.5, levels=0,
                   convection="Gauss LUST grad(U)", start_speed=None,
                   write_interval=None, refine_interval=3, offset=0.0, lateral_speed=0.0,
-                  surface_cells=3):
+                  surface_cells=3, periodic_sides=False):
     """Write the case (blockMesh still to run): n cells per diameter on the
     base mesh, with levels of refinement at the sphere's surface (its wake
     one level less; the surface's band surface_cells cells of the finest
@@ -52,7 +52,8 @@ def sphere_in_box(case, mode, n, speed, nu, density_ratio=1.5, width=4,
     to the time the sphere moves, or the fluid passes it, by 3/4 of the
     box's height less 5 diameters. A free sphere may start offset diameters
     along x off the axis, moving at lateral_speed along x (an oblique path's
-    start, away from the nearer wall)."""
+    start, away from the nearer wall). periodic_sides makes the side walls
+    two cyclic pairs (a lateral drift without walls)."""
     assert mode in ("held", "prescribed", "free")
     speed, nu, density_ratio, max_co = (float(v) for v in (speed, nu, density_ratio, max_co))
     width, below, above = float(width), float(below), float(above)
@@ -70,6 +71,12 @@ def sphere_in_box(case, mode, n, speed, nu, density_ratio=1.5, width=4,
     end_time = float(end_time)
     write_interval = end_time if write_interval is None else float(write_interval)
 
+    sides = ("xLow { type cyclic; neighbourPatch xHigh; faces ((0 4 7 3)); }\n"
+             "    xHigh { type cyclic; neighbourPatch xLow; faces ((1 2 6 5)); }\n"
+             "    yLow { type cyclic; neighbourPatch yHigh; faces ((0 1 5 4)); }\n"
+             "    yHigh { type cyclic; neighbourPatch yLow; faces ((3 7 6 2)); }"
+             if periodic_sides else
+             "sides { type patch; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }")
     for name in ("system", "constant", "0"):
         (case.path / name).mkdir(parents=True, exist_ok=True)
     write(case, "system/blockMeshDict", "dictionary", "blockMeshDict", f"""
@@ -83,7 +90,7 @@ vertices
 blocks (hex (0 1 2 3 4 5 6 7) ({nx} {nx} {nz}) simpleGrading (1 1 1));
 boundary
 (
-    sides {{ type patch; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }}
+    {sides}
     bottom {{ type {"patch" if mode == "held" else "wall"}; faces ((0 3 2 1)); }}
     top {{ type {"patch" if mode == "held" else "wall"}; faces ((4 5 6 7)); }}
 );
@@ -189,15 +196,16 @@ dynamicRefineFvMeshCoeffs
     }}
 }}
 """)
+    side_type = '"(xLow|xHigh|yLow|yHigh)" { type cyclic; }' if periodic_sides else None
     if mode == "held":
-        u_sides = "sides { type slip; }"
+        u_sides = side_type or "sides { type slip; }"
         u_ends = (f"bottom {{ type fixedValue; value uniform (0 0 {speed!r}); }}\n"
                   f"    top {{ type inletOutlet; inletValue uniform (0 0 0);"
                   f" value uniform (0 0 {speed!r}); }}")
         p_ends = "bottom { type zeroGradient; }\n    top { type fixedValue; value uniform 0; }"
         u_internal = f"(0 0 {speed!r})"
     else:
-        u_sides = "sides { type slip; }"
+        u_sides = side_type or "sides { type slip; }"
         u_ends = "bottom { type noSlip; }\n    top { type noSlip; }"
         p_ends = ("bottom { type fixedFluxPressure; value uniform 0; }\n"
                   "    top { type fixedFluxPressure; value uniform 0; }")
@@ -216,7 +224,7 @@ dimensions [1 -1 -2 0 0 0 0];
 internalField uniform 0;
 boundaryField
 {{
-    sides {{ type zeroGradient; }}
+    {side_type or "sides { type zeroGradient; }"}
     {p_ends}
 }}
 """)

@@ -163,3 +163,31 @@ def test_a_free_sphere_falling_across_three_ranks_on_a_refining_mesh_moves_as_in
         histories[ranks] = case.history()["sphere"]
     assert (histories[1][0, 3] - histories[1][-1, 3]) > 2*D
     assert_same_trajectory(histories[1], histories[3])
+
+
+def test_a_free_sphere_reaching_a_periodic_boundary_stops_with_an_error(tmp_path, foam_env):
+    """Free particles have no periodic images: one drifting sideways onto the
+    cells next to the cyclic sides stops the run, naming it, with its state
+    written (it went on before, its fractions cut off at the boundary as if
+    the other side were a wall), and one placed there is refused at the
+    start."""
+    case = sphere_in_box(Case(tmp_path / "drift", foam_env), "free", 4, 0.1,
+                         viscosity_for_galileo(144, 1.5), width=3, below=4, above=4,
+                         end_time=0.05, start_speed=0, offset=0.7, lateral_speed=0.1,
+                         periodic_sides=True)
+    case.run("blockMesh")
+    result = case.run("pimpleDLMFoam", check=False)
+    assert result.returncode > 0
+    assert "Free particle sphere reached the cells next to a periodic" in result.log
+    last = case.times()[-1]
+    assert last != "0" and (case.path / last / "uniform" / "particles").exists()
+    assert float(last) < 0.02
+
+    start = sphere_in_box(Case(tmp_path / "start", foam_env), "free", 4, 0.1,
+                          viscosity_for_galileo(144, 1.5), width=3, below=4, above=4,
+                          end_time=0.05, offset=0.8, periodic_sides=True)
+    start.run("blockMesh")
+    result = start.run("pimpleDLMFoam", check=False)
+    assert result.returncode > 0
+    assert "Particle sphere" in result.log
+    assert "covers cells next to a periodic (cyclic) boundary at the start" in result.log

@@ -15,6 +15,7 @@
 #include "OSspecific.H"
 #include "emptyPolyPatch.H"
 #include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
 #include "centreDistances.H"
 #include "uniformDimensionedFields.H"
 #include <sstream>
@@ -401,6 +402,10 @@ void Foam::dlmParticleCloud::failStop() const
     {
         failAtBoundary();
     }
+    if (reachingPeriodic())
+    {
+        failAtPeriodic();
+    }
     if (leftMesh())
     {
         failOutsideMesh();
@@ -590,6 +595,17 @@ void Foam::dlmParticleCloud::checkStart() const
             << " next to the walls: move it, or add a 'contact' dictionary"
             << " to " << source << exit(FatalError);
     }
+    if (reachingPeriodic())
+    {
+        const dlmParticle& p = particles_[reachingPeriodic_];
+        FatalErrorInFunction
+            << "Particle " << p.name() << " (" << source << ") at "
+            << p.position() << " covers cells next to a periodic (cyclic)"
+            << " boundary at the start. Free particles have no periodic"
+            << " images: they must keep off the cells next to cyclic"
+            << " patches (fixed and prescribed particles may cross them)"
+            << exit(FatalError);
+    }
 
     // The projection needs a cell centre inside each particle wherever it
     // is: a diameter of two cells has one. A cell's span, a difference of
@@ -714,9 +730,26 @@ void Foam::dlmParticleCloud::wrapPeriodic()
 
 void Foam::dlmParticleCloud::reduceTouching()
 {
-    label first = touchingBoundary_ < 0 ? labelMax : touchingBoundary_;
-    reduce(first, minOp<label>());
-    touchingBoundary_ = first == labelMax ? -1 : first;
+    for (label* first : {&touchingBoundary_, &reachingPeriodic_})
+    {
+        label i = *first < 0 ? labelMax : *first;
+        reduce(i, minOp<label>());
+        *first = i == labelMax ? -1 : i;
+    }
+}
+
+
+void Foam::dlmParticleCloud::failAtPeriodic() const
+{
+    const dlmParticle& p = particles_[reachingPeriodic_];
+    FatalErrorInFunction
+        << "Free particle " << p.name() << " reached the cells next to a"
+        << " periodic (cyclic) boundary at t = " << mesh_.time().value()
+        << " (position " << p.position() << ", velocity " << p.velocity()
+        << "). Free particles have no periodic images, so they cannot cross"
+        << " cyclic patches (fixed and prescribed particles can): widen the"
+        << " domain across the cyclic patches or use walls. The state of"
+        << " this time has been written" << exit(FatalError);
 }
 
 
@@ -1149,6 +1182,8 @@ void Foam::dlmParticleCloud::updateCellGeometry()
 
     boundaryCell_.setSize(mesh_.nCells());
     boundaryCell_ = false;
+    periodicCell_.setSize(mesh_.nCells());
+    periodicCell_ = false;
     for (const polyPatch& patch : mesh_.boundaryMesh())
     {
         if (!patch.coupled() && !isA<emptyPolyPatch>(patch))
@@ -1156,6 +1191,13 @@ void Foam::dlmParticleCloud::updateCellGeometry()
             for (const label celli : patch.faceCells())
             {
                 boundaryCell_[celli] = true;
+            }
+        }
+        if (isA<cyclicPolyPatch>(patch) || isA<processorCyclicPolyPatch>(patch))
+        {
+            for (const label celli : patch.faceCells())
+            {
+                periodicCell_[celli] = true;
             }
         }
     }
@@ -1210,6 +1252,14 @@ void Foam::dlmParticleCloud::updateFractions(const label i)
             )
             {
                 touchingBoundary_ = i;
+            }
+            if
+            (
+                periodicCell_[celli] && p.isFree()
+             && (reachingPeriodic_ < 0 || i < reachingPeriodic_)
+            )
+            {
+                reachingPeriodic_ = i;
             }
             if (f < 1 && !cellIsBox_[celli])
             {
@@ -1534,6 +1584,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     nParticles_(0),
     wrapsPeriodic_(false),
     touchingBoundary_(-1),
+    reachingPeriodic_(-1),
     leftMesh_(-1),
     overlapping_(-1, -1),
     nMoves_(0),
@@ -1799,6 +1850,7 @@ void Foam::dlmParticleCloud::move()
     }
 
     touchingBoundary_ = -1;
+    reachingPeriodic_ = -1;
     if (contact_.valid())
     {
         // The projected motion holds the last step's mean contact loads,
