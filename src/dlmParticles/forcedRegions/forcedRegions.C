@@ -47,6 +47,9 @@ void Foam::forcedRegions::setMeshGeometry()
     nextTo_ = -1;
     leftToFlow_.setSize(nCells);
     leftToFlow_ = 0;
+    leftToFlowCells_.clear();
+    blendedFaces_.clear();
+    blendingSet_ = false;
     for
     (
         labelList* faceList :
@@ -377,6 +380,7 @@ void Foam::forcedRegions::markInsideCells()
     exchangeAcross(nextTo_, nextToAcross_, nextToSecondLayer_);
 
     leftToFlow_ = 0;
+    leftToFlowCells_.clear();
     leftToFlowAcross_ = 0;
     leftToFlowSecondLayer_ = 0;
 }
@@ -397,6 +401,7 @@ bool Foam::forcedRegions::markLeftToFlow()
         if (insideOf_[celli] < 0 && nextTo_[celli] != -1 && !forced[celli])
         {
             leftToFlow_[celli] = 1;
+            leftToFlowCells_.append(celli);
         }
     }
     exchangeAcross(leftToFlow_, leftToFlowAcross_, leftToFlowSecondLayer_);
@@ -899,30 +904,60 @@ void Foam::forcedRegions::setBlendingFactor
     const scalar gapBlending
 ) const
 {
-    const labelList& gap = leftToFlow_;
-    const labelList& gapAcross = leftToFlowAcross_;
-
+    // Only the faces of the last gaps and of the new ones change, except
+    // after a mesh change, which sets every face
     scalarField& internal = factor.primitiveFieldRef();
-    forAll(internal, facei)
+    surfaceScalarField::Boundary& boundary = factor.boundaryFieldRef();
+    const label nInternal = mesh_.nInternalFaces();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    const auto set = [&](const label facei, const scalar value)
     {
-        internal[facei] =
-            gap[mesh_.owner()[facei]] || gap[mesh_.neighbour()[facei]]
-          ? gapBlending
-          : 1;
-    }
-    surfaceScalarField::Boundary& boundary =
-        factor.boundaryFieldRef();
-    forAll(boundary, patchi)
-    {
-        const fvPatch& fp = mesh_.boundary()[patchi];
-        forAll(boundary[patchi], facei)
+        if (facei < nInternal)
         {
-            const label bFacei = fp.start() + facei - mesh_.nInternalFaces();
-            boundary[patchi][facei] =
-                gap[fp.faceCells()[facei]]
-             || (fp.coupled() && gapAcross[bFacei])
-              ? gapBlending
-              : 1;
+            internal[facei] = value;
+            return;
+        }
+        const label patchi = patches.whichPatch(facei);
+        if (boundary[patchi].size())
+        {
+            boundary[patchi][facei - patches[patchi].start()] = value;
+        }
+    };
+
+    if (blendingSet_)
+    {
+        for (const label facei : blendedFaces_)
+        {
+            set(facei, 1);
+        }
+    }
+    else
+    {
+        internal = 1;
+        boundary = 1;
+        blendingSet_ = true;
+    }
+    blendedFaces_.clear();
+
+    for (const label celli : leftToFlowCells_)
+    {
+        for (const label facei : mesh_.cells()[celli])
+        {
+            set(facei, gapBlending);
+            blendedFaces_.append(facei);
+        }
+    }
+    forAll(leftToFlowAcross_, bFacei)
+    {
+        const label facei = nInternal + bFacei;
+        if
+        (
+            leftToFlowAcross_[bFacei]
+         && patches[patches.whichPatch(facei)].coupled()
+        )
+        {
+            set(facei, gapBlending);
+            blendedFaces_.append(facei);
         }
     }
 }

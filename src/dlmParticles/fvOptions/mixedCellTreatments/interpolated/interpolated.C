@@ -7,7 +7,6 @@
 #include "interpolated.H"
 #include "dlmParticleCloud.H"
 #include "fvmDdt.H"
-#include "gaussGrad.H"
 #include "scalarMatrices.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -196,6 +195,7 @@ void Foam::fv::interpolated::updateRegions()
 
     const label nSearches = regions_.update();
     regions_.setBlendingFactor(blendingFactor_, gapBlending_);
+    forcedCellOperators_.setCells(forcedCells());
 
     if (debug)
     {
@@ -297,23 +297,25 @@ void Foam::fv::interpolated::moveForceWithParticles()
         return;
     }
 
+    // Held particles keep their force on the cells: their inside cells
+    // are held implicitly in every solution, and a prescribed sphere's
+    // force moved with it took its flow 0.3 % off the held sphere's
     force_.correctBoundaryConditions();
-    const volTensorField gradForce
+    const tensorField gradForce(forcedCellOperators_.grad(force_));
+    const vectorField carried
     (
-        fv::gaussGrad<vector>(mesh_).calcGrad(force_, "grad(rigidForce)")
+        UIndirectList<vector>(force_, forcedCellOperators_.cells())()
     );
-    const vectorField carried(force_.primitiveField());
     vectorField& f = force_.primitiveFieldRef();
     const vectorField& C = mesh_.C();
 
+    label k = 0;
     forAll(particles, i)
     {
-        // Held particles keep their force on the cells: their inside cells
-        // are held implicitly in every solution, and a prescribed sphere's
-        // force moved with it took its flow 0.3 % off the held sphere's
         const dlmParticle& p = particles[i];
         if (!p.isFree())
         {
+            k += regions_.cells()[i].size();
             continue;
         }
         const tensor turn(p.stepRotation().R());
@@ -324,9 +326,30 @@ void Foam::fv::interpolated::moveForceWithParticles()
             // particle
             const vector arm(C[celli] - p.position());
             const vector back((arm & turn) - arm - p.stepDisplacement());
-            f[celli] = turn & (carried[celli] + (back & gradForce[celli]));
+            f[celli] = turn & (carried[k] + (back & gradForce[k]));
+            ++k;
         }
     }
+}
+
+
+Foam::labelList Foam::fv::interpolated::forcedCells() const
+{
+    label n = 0;
+    for (const DynamicList<label>& cells : regions_.cells())
+    {
+        n += cells.size();
+    }
+    labelList forced(n);
+    n = 0;
+    for (const DynamicList<label>& cells : regions_.cells())
+    {
+        for (const label celli : cells)
+        {
+            forced[n++] = celli;
+        }
+    }
+    return forced;
 }
 
 
@@ -463,7 +486,8 @@ Foam::fv::interpolated::interpolated
         dimensionedScalar("one", dimless, 1)
     ),
     regions_(mesh),
-    regionMoves_(-1)
+    regionMoves_(-1),
+    forcedCellOperators_(mesh)
 {}
 
 
@@ -773,13 +797,17 @@ void Foam::fv::interpolated::correct(volVectorField& U)
     // The force that would have made this solution the targets: the
     // momentum equation's operator applied to the error (extended by zero),
     // and the implicit hold's force, which acted in this solution
-    const vectorField change(forcingChange(error));
+    const vectorField change
+    (
+        forcedCellOperators_.product(momentum_(), holdRate_, error)
+    );
+    label k = 0;
     forAll(particles, i)
     {
         const bool held = !particles[i].isFree();
         for (const label celli : regions_.cells()[i])
         {
-            f[celli] = heldForce_[celli] + forceRelaxation_*change[celli];
+            f[celli] = heldForce_[celli] + forceRelaxation_*change[k++];
             if (held)
             {
                 appliedForce_[celli] =
@@ -977,58 +1005,6 @@ void Foam::fv::interpolated::setLoads
         }
         p.setLoads(F, T);
     }
-}
-
-
-Foam::tmp<Foam::vectorField> Foam::fv::interpolated::forcingChange
-(
-    const volVectorField& error
-) const
-{
-    const fvMatrix<vector>& M = momentum_();
-    const vectorField& e = error.primitiveField();
-    const scalarField& V = mesh_.V();
-
-    tmp<vectorField> tchange(new vectorField(M.diag()*e + holdRate_*V*e));
-    vectorField& change = tchange.ref();
-
-    const labelUList& owner = M.lduAddr().lowerAddr();
-    const labelUList& neighbour = M.lduAddr().upperAddr();
-    if (M.hasUpper())
-    {
-        const scalarField& upper = M.upper();
-        const scalarField& lower = M.hasLower() ? M.lower() : upper;
-        forAll(owner, facei)
-        {
-            change[owner[facei]] += upper[facei]*e[neighbour[facei]];
-            change[neighbour[facei]] += lower[facei]*e[owner[facei]];
-        }
-    }
-
-    forAll(error.boundaryField(), patchi)
-    {
-        const fvPatchVectorField& pe = error.boundaryField()[patchi];
-        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
-        const vectorField& internal = M.internalCoeffs()[patchi];
-        forAll(faceCells, facei)
-        {
-            change[faceCells[facei]] +=
-                cmptMultiply(internal[facei], e[faceCells[facei]]);
-        }
-        if (pe.coupled())
-        {
-            const vectorField neighbourError(pe.patchNeighbourField());
-            const vectorField& coupling = M.boundaryCoeffs()[patchi];
-            forAll(faceCells, facei)
-            {
-                change[faceCells[facei]] -=
-                    cmptMultiply(coupling[facei], neighbourError[facei]);
-            }
-        }
-    }
-
-    change /= V;
-    return tchange;
 }
 
 
