@@ -525,10 +525,12 @@ def test_wet_pile_restarted_in_binary_with_an_adjustable_step_continues_as_never
     """27 spheres (6 cells per diameter, density 2500) settle in water onto
     the floor of the 30 x 30 x 45 mm box with wet contacts, the step
     adjusted, fields in binary; stopped at 0.2 s, the pile in lasting
-    contact, and continued to 0.4 s: the same steps and positions as the
-    uninterrupted run to 1e-12 m (6e-14 measured). Before the written state
-    held the particles near a contact, the first step after the restart was
-    0.0029 s where the run took 0.0022 s, and the pile ended 1.1 mm away."""
+    contact, and continued to 0.4 s: the same steps, and positions within
+    1e-11 m of the uninterrupted run's (they part by 1e-17 m at the first
+    step, round-off, which the lasting contacts grow to 3e-12 m by 0.4 s).
+    Before the written state held the particles near a contact, the first
+    step after the restart was 0.0029 s where the run took 0.0022 s, and
+    the pile ended 1.1 mm away."""
     spheres = "\n".join(
         f"    s{9*i + 3*j + k} {{ shape sphere; radius 0.003; density 2500; "
         f"material particle; position ({0.015 + (i - 1)*0.0075 + 0.0002*(j - 1)!r} "
@@ -568,7 +570,7 @@ def test_wet_pile_restarted_in_binary_with_an_adjustable_step_continues_as_never
         tail = track[track[:, 0] > 0.2 + 1e-9]
         assert len(b[name]) == len(tail) >= 50
         assert np.abs(b[name][:, 0] - tail[:, 0]).max() < 1e-12
-        assert np.abs(b[name][:, 1:4] - tail[:, 1:4]).max() < 1e-12
+        assert np.abs(b[name][:, 1:4] - tail[:, 1:4]).max() < 1e-11
 
 
 @pytest.mark.parametrize("interval", [0, 5])

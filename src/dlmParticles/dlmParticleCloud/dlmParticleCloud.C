@@ -1078,6 +1078,10 @@ void Foam::dlmParticleCloud::removeParticles(const labelList& oldToNew)
             {
                 speedChange_[k] = speedChange_[i];
             }
+            if (i < nearSpeed_.size())
+            {
+                nearSpeed_[k] = nearSpeed_[i];
+            }
         }
     }
     particles_.resize(nKept);
@@ -1085,6 +1089,7 @@ void Foam::dlmParticleCloud::removeParticles(const labelList& oldToNew)
     fractions_.resize(nKept);
     nearCells_.resize(nKept);
     speedChange_.resize(min(speedChange_.size(), nKept));
+    nearSpeed_.resize(min(nearSpeed_.size(), nKept));
     nParticles_ = nReadKept;
     for (label& source : imageSource_)
     {
@@ -1701,9 +1706,11 @@ Foam::dlmParticleCloud::dlmParticleCloud
         checkInputAgainstState(input, statePath);
     }
 
-    // The last step's change of speed sets the next step's particle Courant
-    // number: a restart takes it from the written state
+    // The last step's change of speed and speeds near contacts set the next
+    // step's particle Courant number: a restart takes them from the written
+    // state
     state.readIfPresent("speedChange", speedChange_);
+    state.readIfPresent("nearSpeed", nearSpeed_);
 
     // Overlaps are input errors at a fresh start only: a restart continues
     // the contacts of the written time, however deep (a brick landing on a
@@ -1944,6 +1951,10 @@ void Foam::dlmParticleCloud::move()
           + mag(p.angularVelocity() - startOmega[i])
            *p.shape().boundingRadius();
     }
+    if (contact_.valid())
+    {
+        nearSpeed_ = contact_->nearSpeeds(particles_);
+    }
 }
 
 
@@ -2049,17 +2060,15 @@ Foam::scalar Foam::dlmParticleCloud::courantNumber(const scalar deltaT) const
         {
             continue;
         }
-        const scalar surfaceSpeed = p.surfaceSpeed();
-        // The fluid around lags a sudden change of the particle's motion
-        // (a bounce): it meets the particle at the change's speed
+        // The fluid around lags a sudden change of the particle's motion:
+        // it meets the particle at the change's speed, the last step's
+        // change and the one a bounce off its near neighbours may bring
+        // (up to its speed relative to them: a pile moving together bounces
+        // nothing off)
         const scalar change =
             i < speedChange_.size() ? speedChange_[i] : 0;
-        const bool mayBounce = contact_.valid() && contact_->nearContact(i);
-        speed = max
-        (
-            speed,
-            (mayBounce ? 2*surfaceSpeed : surfaceSpeed) + change
-        );
+        const scalar bounce = i < nearSpeed_.size() ? nearSpeed_[i] : 0;
+        speed = max(speed, p.surfaceSpeed() + change + bounce);
     }
     return speed*deltaT/cellSizes_.min();
 }
@@ -2108,6 +2117,10 @@ bool Foam::dlmParticleCloud::writeData(Ostream& os) const
     if (speedChange_.size())
     {
         os.writeEntry("speedChange", speedChange_);
+    }
+    if (nearSpeed_.size())
+    {
+        os.writeEntry("nearSpeed", nearSpeed_);
     }
 
     os.precision(oldPrecision);

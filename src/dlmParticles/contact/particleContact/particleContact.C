@@ -1456,6 +1456,32 @@ void Foam::particleContact::evolve
 }
 
 
+Foam::scalarField Foam::particleContact::nearSpeeds
+(
+    const PtrList<dlmParticle>& particles
+) const
+{
+    scalarField speeds(particles.size(), Zero);
+    for (const labelPair& pair : pairs_)
+    {
+        const scalar s =
+            mag
+            (
+                particles[pair.first()].velocity()
+              - particles[pair.second()].velocity()
+            );
+        speeds[pair.first()] = max(speeds[pair.first()], s);
+        speeds[pair.second()] = max(speeds[pair.second()], s);
+    }
+    for (const FixedList<label, 3>& candidate : wallCandidates_)
+    {
+        const label i = candidate[0];
+        speeds[i] = max(speeds[i], mag(particles[i].velocity()));
+    }
+    return speeds;
+}
+
+
 void Foam::particleContact::checkWalls() const
 {
     DynamicList<label> features;
