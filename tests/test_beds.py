@@ -64,17 +64,161 @@ def test_sphere_across_periodic_boundaries_sees_the_flow_of_the_centred_one(
     assert c[-1] == pytest.approx(b[-1], rel=1e-6)
 
 
-def test_free_sphere_across_a_periodic_boundary_is_an_input_error(
-        tmp_path, foam_env):
-    case = array_case(tmp_path, foam_env, "free", shift_cells=6)
-    properties = case.path / "constant" / "particleProperties"
-    properties.write_text(properties.read_text().replace(
-        "motion      fixed;", "motion      free;"))
+def free_periodic_case(tmp_path, foam_env, name, position, mixed_cells="interpolated"):
+    """A free sphere (4 cells per diameter, density ratio 2) launched
+    obliquely through water at rest in a periodic box of 10^3 cells."""
+    case = Case.copy(ARRAY, tmp_path / name, foam_env)
+    write_periodic_box(case, (0.01, 0.01, 0.01), (10, 10, 10))
+    x, y, z = position
+    (case.path / "constant" / "particleProperties").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }\n"
+        "particles { sphere { shape sphere; radius 0.002; density 2000;"
+        f" position ({x!r} {y!r} {z!r}); velocity (0.05 0.03 0.01); }} }}\n")
+    (case.path / "system" / "fvOptions").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n"
+        f"rigidProjection {{ type rigidProjection; mixedCells {mixed_cells}; }}\n")
+    for (file, entry), value in {
+        ("constant/transportProperties", "nu"): 1e-6,
+        ("system/controlDict", "adjustTimeStep"): "no",
+        ("system/controlDict", "deltaT"): 0.005,
+        ("system/controlDict", "endTime"): 0.1,
+        ("system/controlDict", "writeInterval"): 0.05,
+    }.items():
+        case.set(file, entry, value)
+    case.converge_linear_solvers()
     case.run("blockMesh")
-    result = case.run("pimpleDLMFoam", check=False)
-    assert result.returncode != 0
-    assert "Particle sphere" in result.log
-    assert "crosses a periodic boundary" in result.log
+    return case
+
+
+@pytest.mark.parametrize("mixed_cells", ["interpolated", "volumeWeighted"])
+def test_free_sphere_crossing_periodic_boundaries_moves_as_the_centred_one(
+        tmp_path, foam_env, mixed_cells):
+    """A free sphere launched obliquely in a periodic box: shifted by whole
+    cells so that it starts across the x and z boundaries and its centre
+    crosses y = 0.01 (moving back by a period), it has the discrete problem
+    of the sphere that starts in the middle, whose centre stays in the box,
+    and moves as it does to solver tolerance: its images' sums are the
+    sphere's, its carried force and its mass follow it across."""
+    centred = free_periodic_case(tmp_path, foam_env, "centred", (0.005, 0.005, 0.005),
+                                 mixed_cells)
+    centred.run("pimpleDLMFoam")
+    shift = np.array([0.004, 0.003, 0.004])
+    shifted = free_periodic_case(tmp_path, foam_env, "shifted",
+                                 tuple(float(v) for v in 0.005 + shift), mixed_cells)
+    shifted.run("pimpleDLMFoam")
+    assert "Periodic images: 26" in (shifted.path / "log.pimpleDLMFoam").read_text()
+
+    a, b = centred.history()["sphere"], shifted.history()["sphere"]
+    assert a.shape == b.shape == (20, a.shape[1])
+    # The centred sphere's centre stays in the box; the shifted one's
+    # crosses y = 0.01
+    assert np.all((a[:, 1:4] > 0.005) & (a[:, 1:4] < 0.01))
+    assert b[0, 2] > 0.008 and b[-1, 2] < 0.001
+    # Positions modulo the period, velocities, loads
+    unwrapped = np.mod(b[:, 1:4] - shift, 0.01)
+    assert np.abs(unwrapped - a[:, 1:4]).max() < 1e-9*0.01
+    speed = np.abs(a[:, 4:7]).max()
+    assert np.abs(b[:, 4:7] - a[:, 4:7]).max() < 1e-9*speed
+    assert np.abs(b[:, 10:13] - a[:, 10:13]).max() < 1e-9*np.abs(a[:, 10:13]).max()
+    # A real motion: the fluid slowed the sphere by a tenth at least
+    assert a[-1, 4] < 0.9*0.05
+
+    if mixed_cells == "interpolated":
+        # On 3 ranks in slabs along x: the x cyclic pair lies wholly on
+        # processor boundaries (no rank holds a face of it), the images'
+        # sums gathered from all three
+        parallel = Case.copy(shifted.path, tmp_path / "parallel", foam_env, parameters=True)
+        (parallel.path / "system" / "decomposeParDict").write_text(
+            "FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+            "numberOfSubdomains 3;\nmethod simple;\n"
+            "simpleCoeffs { n (3 1 1); delta 0.001; }\n")
+        parallel.run("blockMesh")
+        parallel.run("decomposePar")
+        parallel.run("pimpleDLMFoam", np=3)
+        c = parallel.history()["sphere"]
+        assert c.shape == b.shape
+        assert np.abs(c[:, 1:4] - b[:, 1:4]).max() < 1e-9*0.01
+        assert np.abs(c[:, 4:7] - b[:, 4:7]).max() < 1e-9*speed
+
+
+def colliding_pair_case(tmp_path, foam_env, name, shift):
+    """Two free spheres (4 cells per diameter) meeting obliquely in water in
+    a periodic box of 12^3 cells, with contacts (friction: they spin),
+    shifted by the given whole cells from the middle of the box."""
+    case = Case.copy(ARRAY, tmp_path / name, foam_env)
+    L, h = 0.012, 0.001
+    write_periodic_box(case, (L, L, L), (12, 12, 12))
+
+    def place(x, y, z):
+        return " ".join(repr(round(((c + s*h) % L), 12)) for c, s in zip((x, y, z), shift))
+
+    law = ("law overlapVolume; contactTime 1e-3; impactVelocity 0.1;"
+           " restitution 0.5; friction 0.3;")
+    (case.path / "constant" / "particleProperties").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }\n"
+        f"contact {{ pairs {{ spheres {{ materials (particle particle); {law} }} }} }}\n"
+        "particles {\n"
+        f" a {{ shape sphere; radius 0.002; density 2000; position ({place(0.0035, 0.006, 0.006)});"
+        " velocity (0.1 0 0); }\n"
+        f" b {{ shape sphere; radius 0.002; density 2000; position ({place(0.0085, 0.0068, 0.006)});"
+        " velocity (-0.1 0 0); }\n}\n")
+    (case.path / "system" / "fvOptions").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n"
+        "rigidProjection { type rigidProjection; }\n")
+    for (file, entry), value in {
+        ("constant/transportProperties", "nu"): 1e-6,
+        ("system/controlDict", "adjustTimeStep"): "no",
+        ("system/controlDict", "deltaT"): 0.001,
+        ("system/controlDict", "endTime"): 0.03,
+        ("system/controlDict", "writeInterval"): 0.03,
+    }.items():
+        case.set(file, entry, value)
+    case.converge_linear_solvers()
+    case.run("blockMesh")
+    return case
+
+
+def test_spheres_colliding_across_a_periodic_boundary_collide_as_in_the_middle(
+        tmp_path, foam_env):
+    """Two free spheres meeting obliquely with friction: shifted by whole
+    cells so that they meet across the x cyclic pair (a sphere against the
+    other's image, met once, not twice), they collide as the pair in the
+    middle of the box: the same bounce, spin and contact force to solver
+    tolerance."""
+    shift = (6, 3, 2)
+    centred = colliding_pair_case(tmp_path, foam_env, "centred", (0, 0, 0))
+    centred.run("pimpleDLMFoam")
+    shifted = colliding_pair_case(tmp_path, foam_env, "shifted", shift)
+    shifted.run("pimpleDLMFoam")
+    a, b = centred.history(), shifted.history()
+    for name in ("a", "b"):
+        p, q = a[name], b[name]
+        assert p.shape == q.shape == (30, p.shape[1])
+        offset = 0.001*np.array(shift)
+        assert np.abs(np.mod(q[:, 1:4] - offset, 0.012) - p[:, 1:4]).max() < 1e-9*0.012
+        assert np.abs(q[:, 4:7] - p[:, 4:7]).max() < 1e-9*0.1
+        assert np.abs(q[:, 7:10] - p[:, 7:10]).max() < 1e-8*np.abs(p[:, 7:10]).max()
+        # Contact force (the step's mean)
+        assert np.abs(q[:, 16:19] - p[:, 16:19]).max() < 1e-8*np.abs(p[:, 16:19]).max()
+    # Stopped in the collision (binary) and continued: as if never stopped
+    # (the images and their contact springs made again)
+    restarted = colliding_pair_case(tmp_path, foam_env, "restarted", shift)
+    restarted.set("system/controlDict", "writeFormat", "binary")
+    restarted.set("system/controlDict", "endTime", 0.008)
+    restarted.run("pimpleDLMFoam")
+    restarted.set("system/controlDict", "endTime", 0.03)
+    restarted.run("pimpleDLMFoam")
+    c = restarted.history("0.008")
+    for name in ("a", "b"):
+        q, r = b[name][8:], c[name]
+        assert r.shape == q.shape
+        assert np.abs(r[:, 1:10] - q[:, 1:10]).max() < 1e-12
+    # A real collision: it took most of the spheres' approach, turned them
+    # aside and spun them
+    ua, ub = a["a"], a["b"]
+    assert abs(ua[-1, 4]) < 0.02 and abs(ub[-1, 4]) < 0.02
+    assert ua[-1, 5] < -0.01 < 0.01 < ub[-1, 5]
+    assert np.abs(ua[-1, 7:10]).max() > 1
 
 
 def galilean_case(tmp_path, foam_env, name, velocity):

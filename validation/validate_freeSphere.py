@@ -22,8 +22,18 @@ axis along x and --lateral-speed V moving at V u_g along x (an oblique
 path's start, away from the nearer wall); --prescribed-start P moves it at
 the published velocity for P diameters, then frees it (analysed over the
 free part). --surface-cells B sets the surface band's width outside the
-surface (3 cells of the finest level). Writes results/freeSphere.csv and
-a plot per run
+surface (3 cells of the finest level).
+
+--frame stream holds the sphere in the box instead, for the long runs the
+oblique and oscillating paths need (Uhlmann & Dusek ran 250 time units
+d/u_g, some 340 diameters of fall): the fluid enters the box from below at
+the published u_V and leaves at the top, the sides are periodic (the
+oblique path crosses them), the sphere starts at rest in that stream a
+third of the box's height above the inlet, moving sideways at
+--lateral-speed (the seed of the path's instability), and runs for
+--time-units d/u_g (250); the speeds are taken relative to the stream.
+
+Writes results/freeSphere.csv and a plot per run
 (results/freeSphere_Ga<Ga>_N<N>_L<L>_W<W>_H<H>_Co<Co>_R<R>.png). With
 --case DIR it runs nothing: it reports the finished case DIR (the
 settlingSphere tutorial's) at --ga and plots it into DIR/freeSphere.png.
@@ -31,7 +41,8 @@ settlingSphere tutorial's) at --ga and plots it into DIR/freeSphere.png.
     validation/validate_freeSphere.py [--ga 144,178.46] [--levels 2]
         [--width 6] [--height 30] [--max-co 0.5] [--np 1]
         [--refine-interval 3] [--offset 0] [--lateral-speed 0]
-        [--prescribed-start 0] [--surface-cells 3] [N ...]
+        [--prescribed-start 0] [--surface-cells 3]
+        [--frame box|stream] [--time-units 250] [N ...]
         (default N = 4)
     validation/validate_freeSphere.py --ga 144 --case tutorials/settlingSphere
 """
@@ -46,13 +57,14 @@ import numpy as np
 
 from common import (REFERENCE, RESULTS, RUNS, Case, foam_environment,
                     merge_row, timed_run)
-from sphereInBox import D, gravitational_speed, sphere_in_box, viscosity_for_galileo
+from sphereInBox import D, G, gravitational_speed, sphere_in_box, viscosity_for_galileo
 
 TABLE = RESULTS / "freeSphere.csv"
 HEADER = ["Ga", "baseCellsPerDiameter", "levels", "surfaceCellsPerDiameter", "widthD",
           "heightD", "maxCo", "refineInterval", "uV_ug", "uV_reference", "uV_error", "uV_drift",
           "uH_ug", "uH_reference", "angle_deg", "angle_reference", "frequency",
-          "wallTime_s", "steps", "lastCells", "meshChangeShare", "surfaceBandCells"]
+          "wallTime_s", "steps", "lastCells", "meshChangeShare", "surfaceBandCells",
+          "frame"]
 DENSITY_RATIO = 1.5
 
 
@@ -75,6 +87,20 @@ def mesh_changes(log):
     share = re.search(
         r"following the change [0-9.e+-]+ s, ([0-9.e+-]+) % of the execution time", log)
     return (int(cells[-1]) if cells else None), (float(share.group(1)) if share else 0.0)
+
+
+def in_fluid_frame(history, speed, period):
+    """A history in the stream frame (the fluid entering at speed along +z,
+    the sides periodic with the given period) as a fall through fluid at
+    rest: the crossings of the sides undone, the stream's motion added."""
+    history = history.copy()
+    t = history[:, 0] - history[0, 0]
+    for column in (1, 2):
+        jumps = np.diff(history[:, column])
+        history[1:, column] -= period*np.cumsum(np.round(jumps/period))
+    history[:, 3] -= speed*t
+    history[:, 6] -= speed
+    return history
 
 
 def analyse(history, ug):
@@ -142,6 +168,8 @@ def main():
     parser.add_argument("--lateral-speed", type=float, default=0)
     parser.add_argument("--surface-cells", type=int, default=3)
     parser.add_argument("--prescribed-start", type=float, default=0)
+    parser.add_argument("--frame", choices=("box", "stream"), default="box")
+    parser.add_argument("--time-units", type=float, default=250)
     parser.add_argument("--case", type=pathlib.Path)
     parser.add_argument("resolutions", nargs="*", type=int, default=[4])
     args = parser.parse_args()
@@ -160,25 +188,29 @@ def main():
                     + (f"_X{args.offset:g}_V{args.lateral_speed:g}"
                        if args.offset or args.lateral_speed else "")
                     + (f"_S{args.surface_cells}" if args.surface_cells != 3 else "")
-                    + (f"_P{args.prescribed_start:g}" if args.prescribed_start else ""))
+                    + (f"_P{args.prescribed_start:g}" if args.prescribed_start else "")
+                    + (f"_stream{args.time_units:g}" if args.frame == "stream" else ""))
             case = Case(RUNS / name, env)
             if case.path.exists():
                 shutil.rmtree(case.path)
             case.path.mkdir(parents=True)
             end_time = (args.height - 8)*D/(ref_v*ug)
             release = args.prescribed_start*D/(ref_v*ug)
-            if release:
+            if args.frame == "stream":
+                stream_case(case, galileo, n, ref_v*ug, args)
+            elif release:
                 # The published motion, its wake forming, then free
                 start, lateral = ref_v*ug, (0 if math.isnan(ref_h) else ref_h)*ug
             else:
                 start, lateral = 0.95*ref_v*ug, args.lateral_speed*ug
-            sphere_in_box(case, "free", n, ref_v*ug,
-                          viscosity_for_galileo(galileo, DENSITY_RATIO), DENSITY_RATIO,
-                          width=args.width, below=4, above=args.height - 4,
-                          max_co=args.max_co, levels=args.levels, start_speed=start,
-                          end_time=release or end_time, write_interval=release or None,
-                          refine_interval=args.refine_interval, offset=args.offset,
-                          lateral_speed=lateral, surface_cells=args.surface_cells)
+            if args.frame == "box":
+                sphere_in_box(case, "free", n, ref_v*ug,
+                              viscosity_for_galileo(galileo, DENSITY_RATIO), DENSITY_RATIO,
+                              width=args.width, below=4, above=args.height - 4,
+                              max_co=args.max_co, levels=args.levels, start_speed=start,
+                              end_time=release or end_time, write_interval=release or None,
+                              refine_interval=args.refine_interval, offset=args.offset,
+                              lateral_speed=lateral, surface_cells=args.surface_cells)
             if release:
                 prescribe(case, True)
             case.run("blockMesh")
@@ -192,6 +224,8 @@ def main():
                 history = case.history(released)["sphere"]
             else:
                 history = case.history()["sphere"]
+            if args.frame == "stream":
+                history = in_fluid_frame(history, ref_v*ug, args.width*D)
             measured = analyse(history, ug)
             u_v, u_h, angle, drift, frequency = measured
             log = (case.path / "log.pimpleDLMFoam").read_text()
@@ -200,12 +234,30 @@ def main():
                       [galileo, n, args.levels, n << args.levels, args.width, args.height,
                        args.max_co, args.refine_interval, u_v, ref_v, u_v/ref_v - 1, drift,
                        u_h, ref_h, angle, ref_angle, frequency, seconds, len(history),
-                       cells or 0, share, args.surface_cells],
-                      key_columns=[0, 1, 2, 4, 5, 6, 7, 21])
+                       cells or 0, share, args.surface_cells, args.frame],
+                      key_columns=[0, 1, 2, 4, 5, 6, 7, 21, 22])
             plot(history, ug, galileo, ref_v, RESULTS / f"{name}.png")
             print(f"Ga={galileo:g} N={n} L={args.levels} W={args.width:g}: "
                   + summary(galileo, measured, cells, share, len(history), seconds),
                   flush=True)
+
+
+def stream_case(case, galileo, n, speed, args):
+    """The sphere free in an upward stream at speed (tests/sphereInBox.py's
+    held sphere with gravity on and periodic sides), a third of the box
+    above the inlet, moving sideways at args.lateral_speed u_g."""
+    ug = gravitational_speed(DENSITY_RATIO)
+    below = args.height/3
+    sphere_in_box(case, "held", n, speed, viscosity_for_galileo(galileo, DENSITY_RATIO),
+                  DENSITY_RATIO, width=args.width, below=below, above=args.height - below,
+                  end_time=args.time_units*D/ug, max_co=args.max_co, levels=args.levels,
+                  refine_interval=args.refine_interval, surface_cells=args.surface_cells,
+                  periodic_sides=True)
+    g = case.path / "constant" / "g"
+    g.write_text(g.read_text().replace("value (0 0 0);", f"value (0 0 {-G!r});"))
+    properties = case.path / "constant" / "particleProperties"
+    properties.write_text(properties.read_text().replace(
+        "motion fixed;", f"velocity ({args.lateral_speed*ug!r} 0 0);"))
 
 
 def prescribe(case, prescribed):

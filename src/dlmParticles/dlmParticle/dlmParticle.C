@@ -184,6 +184,29 @@ Foam::dlmParticle::dlmParticle
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::dlmParticle::followSource
+(
+    const dlmParticle& source,
+    const vector& offset
+)
+{
+    position_ = source.position_ + offset;
+    velocity_ = source.velocity_;
+    angularVelocity_ = source.angularVelocity_;
+    orientation_ = source.orientation_;
+    velocity0_ = source.velocity0_;
+    angularVelocity0_ = source.angularVelocity0_;
+    force_ = source.force_;
+    torque_ = source.torque_;
+    contactForce_ = source.contactForce_;
+    contactTorque_ = source.contactTorque_;
+    stepDisplacement_ = source.stepDisplacement_;
+    stepRotation_ = source.stepRotation_;
+    coupledMassRatio_ = source.coupledMassRatio_;
+    coupledInertiaRatio_ = source.coupledInertiaRatio_;
+}
+
+
 void Foam::dlmParticle::move(const scalar deltaT)
 {
     if (motion_ == motionType::fixed)

@@ -289,113 +289,6 @@ void Foam::dlmParticleCloud::checkParticles()
 }
 
 
-Foam::List<Foam::vector>
-Foam::dlmParticleCloud::periodicTranslations(const fvMesh& mesh)
-{
-    DynamicList<vector> translations;
-    for (const polyPatch& patch : mesh.boundaryMesh())
-    {
-        const cyclicPolyPatch* cyclicPtr = isA<cyclicPolyPatch>(patch);
-        if (!cyclicPtr || !cyclicPtr->owner())
-        {
-            continue;
-        }
-        // Known where the pair (or a processor part of it) has faces
-        vector translation(Zero);
-        if (cyclicPtr->separated() && cyclicPtr->separation().size())
-        {
-            translation = cyclicPtr->separation()[0];
-        }
-        reduce(translation, maxMagSqrOp<vector>());
-        if (magSqr(translation) > 0)
-        {
-            translations.append(translation);
-        }
-    }
-    return translations;
-}
-
-
-void Foam::dlmParticleCloud::addPeriodicImages()
-{
-    nParticles_ = particles_.size();
-
-    // Every combination of -1, 0 and 1 times each translation
-    const List<vector> translations(periodicTranslations(mesh_));
-    DynamicList<vector> offsets(1, Zero);
-    for (const vector& t : translations)
-    {
-        const label n = offsets.size();
-        for (label k = 0; k < n; ++k)
-        {
-            offsets.append(offsets[k] + t);
-            offsets.append(offsets[k] - t);
-        }
-    }
-
-    const boundBox& bounds = mesh_.bounds();
-    DynamicList<label> sources;
-    wrapsPeriodic_ = false;
-    for (label i = 0; i < nParticles_; ++i)
-    {
-        const dlmParticle& p = particles_[i];
-        const scalar Rb = p.shape().boundingRadius();
-
-        // A prescribed particle moving across the periodic boundaries
-        // needs each image at some time
-        bool movesAcross = false;
-        if (p.motion() == dlmParticle::motionType::prescribed)
-        {
-            for (const vector& t : translations)
-            {
-                movesAcross = movesAcross || mag(p.velocity() & t) > 0;
-            }
-        }
-        wrapsPeriodic_ = wrapsPeriodic_ || movesAcross;
-
-        for (label k = 1; k < offsets.size(); ++k)
-        {
-            // Images that only touch the mesh (a packing touching the
-            // periodic faces) are left out
-            const point X(p.position() + offsets[k]);
-            const scalar touch = 1e-9*Rb;
-            bool inside = true;
-            for (direction d = 0; d < vector::nComponents; ++d)
-            {
-                inside = inside
-                 && X[d] - Rb < bounds.max()[d] - touch
-                 && X[d] + Rb > bounds.min()[d] + touch;
-            }
-            if (!inside && !movesAcross)
-            {
-                continue;
-            }
-            if (p.isFree())
-            {
-                FatalErrorInFunction
-                    << "Particle " << p.name() << " ("
-                    << properties_.filePath() << ") crosses a periodic"
-                    << " boundary: only fixed and prescribed particles may"
-                    << " (their periodic images are added); free particles"
-                    << " must stay clear of periodic boundaries"
-                    << exit(FatalError);
-            }
-            particles_.append
-            (
-                new dlmParticle(p, p.name() + "_image" + Foam::name(k), X)
-            );
-            sources.append(i);
-        }
-    }
-    imageSource_.transfer(sources);
-
-    if (imageSource_.size())
-    {
-        Info<< "Periodic images: " << imageSource_.size() << endl;
-    }
-}
-
-
 void Foam::dlmParticleCloud::failStop() const
 {
     if (touchingBoundary())
@@ -600,11 +493,11 @@ void Foam::dlmParticleCloud::checkStart() const
         const dlmParticle& p = particles_[reachingPeriodic_];
         FatalErrorInFunction
             << "Particle " << p.name() << " (" << source << ") at "
-            << p.position() << " covers cells next to a periodic (cyclic)"
-            << " boundary at the start. Free particles have no periodic"
-            << " images: they must keep off the cells next to cyclic"
-            << " patches (fixed and prescribed particles may cross them)"
-            << exit(FatalError);
+            << p.position() << " covers cells next to a cyclic patch that"
+            << " is not a translation at the start. Particles have periodic"
+            << " images across translational cyclic patches only: a free"
+            << " particle must keep off the cells next to other cyclic"
+            << " patches" << exit(FatalError);
     }
 
     // The projection needs a cell centre inside each particle wherever it
@@ -614,7 +507,7 @@ void Foam::dlmParticleCloud::checkStart() const
     const scalar minCellsPerDiameter = 2;
     const scalar roundOff = 1e-9;
     const bool wet = rhoFluid_.value() > 0;
-    for (label i = 0; wet && i < nParticles_; ++i)
+    for (label i = 0; wet && i < nParticles(); ++i)
     {
         const scalar nCells = cellsPerDiameter(i);
         if (nCells < (1 - roundOff)*minCellsPerDiameter)
@@ -633,14 +526,14 @@ void Foam::dlmParticleCloud::checkStart() const
     // Prescribed particles keep their velocity: find when one would reach
     // the mesh's bounds, in the directions without periodic images
     vector periodic(Zero);
-    for (const vector& t : periodicTranslations(mesh_))
+    for (const vector& t : periodicImages::translations(mesh_))
     {
         periodic += cmptMag(t);
     }
     const Time& runTime = mesh_.time();
     const scalar timeLeft = runTime.endTime().value() - runTime.value();
     const boundBox& bounds = mesh_.bounds();
-    for (label i = 0; i < nParticles_; ++i)
+    for (label i = 0; i < nParticles(); ++i)
     {
         const dlmParticle& p = particles_[i];
         if (p.motion() != dlmParticle::motionType::prescribed)
@@ -679,55 +572,6 @@ void Foam::dlmParticleCloud::checkStart() const
 }
 
 
-void Foam::dlmParticleCloud::wrapPeriodic()
-{
-    if (!wrapsPeriodic_)
-    {
-        return;
-    }
-
-    // Each translation pointing from the mesh's low bounds to its high
-    // ones: a centroid inside has 0 <= (X - min).t/|t|^2 < 1
-    const boundBox& bounds = mesh_.bounds();
-    List<vector> translations(periodicTranslations(mesh_));
-    for (vector& t : translations)
-    {
-        if ((bounds.span() & t) < 0)
-        {
-            t = -t;
-        }
-    }
-
-    for (label i = 0; i < nParticles_; ++i)
-    {
-        const dlmParticle& p = particles_[i];
-        if (p.motion() != dlmParticle::motionType::prescribed)
-        {
-            continue;
-        }
-        vector shift(Zero);
-        for (const vector& t : translations)
-        {
-            shift -=
-                std::floor(((p.position() - bounds.min()) & t)/magSqr(t))*t;
-        }
-        if (magSqr(shift) == 0)
-        {
-            continue;
-        }
-        particles_[i].setPosition(p.position() + shift);
-        forAll(imageSource_, k)
-        {
-            if (imageSource_[k] == i)
-            {
-                dlmParticle& image = particles_[nParticles_ + k];
-                image.setPosition(image.position() + shift);
-            }
-        }
-    }
-}
-
-
 void Foam::dlmParticleCloud::reduceTouching()
 {
     for (label* first : {&touchingBoundary_, &reachingPeriodic_})
@@ -744,12 +588,12 @@ void Foam::dlmParticleCloud::failAtPeriodic() const
     const dlmParticle& p = particles_[reachingPeriodic_];
     FatalErrorInFunction
         << "Free particle " << p.name() << " reached the cells next to a"
-        << " periodic (cyclic) boundary at t = " << mesh_.time().value()
-        << " (position " << p.position() << ", velocity " << p.velocity()
-        << "). Free particles have no periodic images, so they cannot cross"
-        << " cyclic patches (fixed and prescribed particles can): widen the"
-        << " domain across the cyclic patches or use walls. The state of"
-        << " this time has been written" << exit(FatalError);
+        << " cyclic patch that is not a translation at t = "
+        << mesh_.time().value() << " (position " << p.position()
+        << ", velocity " << p.velocity() << "). Particles have periodic"
+        << " images across translational cyclic patches only: widen the"
+        << " domain or use walls. The state of this time has been written"
+        << exit(FatalError);
 }
 
 
@@ -770,8 +614,9 @@ void Foam::dlmParticleCloud::failAtBoundary() const
 void Foam::dlmParticleCloud::checkInMesh()
 {
     const cpuTime timer;
-    boolList inMesh(nParticles_, true);
-    for (label i = 0; i < nParticles_; ++i)
+    // Images outside the mesh are no error: their particles are checked
+    boolList inMesh(particles_.size(), true);
+    for (label i = 0; i < nParticles(); ++i)
     {
         if (particles_[i].isFree())
         {
@@ -856,8 +701,8 @@ void Foam::dlmParticleCloud::checkInputAgainstState
 ) const
 {
     // The particles, not their periodic images
-    HashTable<label> stateIndex(2*nParticles_);
-    for (label i = 0; i < nParticles_; ++i)
+    HashTable<label> stateIndex(2*nParticles());
+    for (label i = 0; i < nParticles(); ++i)
     {
         stateIndex.insert(particles_[i].name(), i);
     }
@@ -967,7 +812,7 @@ void Foam::dlmParticleCloud::checkInputAgainstState
         }
     }
 
-    for (label i = 0; i < nParticles_; ++i)
+    for (label i = 0; i < nParticles(); ++i)
     {
         const word& name = particles_[i].name();
         if (!inInput.found(name))
@@ -985,7 +830,7 @@ void Foam::dlmParticleCloud::checkInputAgainstState
 
 void Foam::dlmParticleCloud::checkOutlets() const
 {
-    for (label i = 0; i < nParticles_; ++i)
+    for (label i = 0; i < nParticles(); ++i)
     {
         const dlmParticle& p = particles_[i];
         for (const particleOutlet& outlet : outlets_)
@@ -1055,7 +900,6 @@ void Foam::dlmParticleCloud::recordRemoval
 void Foam::dlmParticleCloud::removeParticles(const labelList& oldToNew)
 {
     label nKept = 0;
-    label nReadKept = 0;
     forAll(oldToNew, i)
     {
         const label k = oldToNew[i];
@@ -1064,10 +908,6 @@ void Foam::dlmParticleCloud::removeParticles(const labelList& oldToNew)
             continue;
         }
         ++nKept;
-        if (i < nParticles_)
-        {
-            ++nReadKept;
-        }
         if (k != i)
         {
             particles_.set(k, particles_.set(i, nullptr));
@@ -1090,11 +930,7 @@ void Foam::dlmParticleCloud::removeParticles(const labelList& oldToNew)
     nearCells_.resize(nKept);
     speedChange_.resize(min(speedChange_.size(), nKept));
     nearSpeed_.resize(min(nearSpeed_.size(), nKept));
-    nParticles_ = nReadKept;
-    for (label& source : imageSource_)
-    {
-        source = oldToNew[source];
-    }
+    images_.renumber(oldToNew);
 
     if (contact_.valid())
     {
@@ -1113,7 +949,7 @@ bool Foam::dlmParticleCloud::removeLeaving()
 
     labelList oldToNew(identity(particles_.size()));
     label nLeft = 0;
-    for (label i = 0; i < nParticles_; ++i)
+    for (label i = 0; i < nParticles(); ++i)
     {
         const dlmParticle& p = particles_[i];
         if (!p.isFree())
@@ -1142,6 +978,7 @@ bool Foam::dlmParticleCloud::removeLeaving()
         addWorkTime(workPart::motion, timer.elapsedCpuTime());
         return false;
     }
+    images_.removeWithSources(oldToNew);
 
     label k = 0;
     for (label& index : oldToNew)
@@ -1189,6 +1026,7 @@ void Foam::dlmParticleCloud::updateCellGeometry()
     boundaryCell_ = false;
     periodicCell_.setSize(mesh_.nCells());
     periodicCell_ = false;
+    const bool translational = images_.periodic();
     for (const polyPatch& patch : mesh_.boundaryMesh())
     {
         if (!patch.coupled() && !isA<emptyPolyPatch>(patch))
@@ -1198,7 +1036,11 @@ void Foam::dlmParticleCloud::updateCellGeometry()
                 boundaryCell_[celli] = true;
             }
         }
-        if (isA<cyclicPolyPatch>(patch) || isA<processorCyclicPolyPatch>(patch))
+        if
+        (
+            !translational
+         && (isA<cyclicPolyPatch>(patch) || isA<processorCyclicPolyPatch>(patch))
+        )
         {
             for (const label celli : patch.faceCells())
             {
@@ -1314,7 +1156,7 @@ void Foam::dlmParticleCloud::writeVTKPoints(const fileName& dir) const
     {
         OFstream os(dir/"particles_" + timeName + ".vtk");
         os.precision(10);
-        const label n = nParticles_;
+        const label n = nParticles();
 
         os  << "# vtk DataFile Version 3.0" << nl
             << "pimpleDLMFoam particles, time " << timeName << nl
@@ -1437,12 +1279,12 @@ void Foam::dlmParticleCloud::writeVTKSurfaces(const fileName& dir) const
     os.precision(10);
 
     // Each particle's drawing, placed and turned
-    List<pointField> points(nParticles_);
-    List<faceList> faces(nParticles_);
+    List<pointField> points(nParticles());
+    List<faceList> faces(nParticles());
     label nPoints = 0;
     label nFaces = 0;
     label nEntries = 0;
-    for (label i = 0; i < nParticles_; ++i)
+    for (label i = 0; i < nParticles(); ++i)
     {
         const dlmParticle& p = particles_[i];
         p.shape().drawing(points[i], faces[i]);
@@ -1535,7 +1377,7 @@ void Foam::dlmParticleCloud::writeVTK() const
     writeVTKSeries(dir, "particles_", "particles.vtk.series");
 
     bool allRound = true;
-    for (label i = 0; i < nParticles_; ++i)
+    for (label i = 0; i < nParticles(); ++i)
     {
         allRound = allRound && particles_[i].shape().round();
     }
@@ -1586,8 +1428,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
         properties_.getOrDefault<scalar>("surfaceResolution", 32)
     ),
     historyInterval_(properties_.getOrDefault<label>("historyInterval", 1)),
-    nParticles_(0),
-    wrapsPeriodic_(false),
+    images_(mesh),
     touchingBoundary_(-1),
     reachingPeriodic_(-1),
     leftMesh_(-1),
@@ -1688,7 +1529,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
                 << " nothing moves: give (gx gy 0)" << exit(FatalError);
         }
     }
-    addPeriodicImages();
+    images_.add(particles_);
 
     if (properties_.found("contact"))
     {
@@ -1739,7 +1580,7 @@ Foam::dlmParticleCloud::dlmParticleCloud
     }
     checkStart();
 
-    Info<< "Particles: " << nParticles_ << endl;
+    Info<< "Particles: " << nParticles() << endl;
 }
 
 
@@ -1808,13 +1649,6 @@ bool Foam::dlmParticleCloud::allFixed() const
 void Foam::dlmParticleCloud::setProjected()
 {
     projected_ = true;
-
-    forAll(imageSource_, k)
-    {
-        const dlmParticle& image = particles_[nParticles_ + k];
-        dlmParticle& p = particles_[imageSource_[k]];
-        p.setLoads(p.force() + image.force(), p.torque() + image.torque());
-    }
 }
 
 
@@ -1924,7 +1758,8 @@ void Foam::dlmParticleCloud::move()
     {
         particles_[i].setStepMotion(startPosition[i], startOrientation[i]);
     }
-    wrapPeriodic();
+    images_.wrap(particles_);
+    images_.follow(particles_);
     addWorkTime(workPart::motion, timer.elapsedCpuTime());
 
     if (resolved_)
@@ -1983,7 +1818,7 @@ void Foam::dlmParticleCloud::writeStep(const bool forceVTK)
 
         OFstream& os = historyFile_();
         const word timeName(mesh_.time().timeName());
-        for (label i = 0; i < nParticles_; ++i)
+        for (label i = 0; i < nParticles(); ++i)
         {
             const dlmParticle& p = particles_[i];
             os  << mesh_.time().value() << ' ' << p.name().c_str();
@@ -2026,7 +1861,7 @@ void Foam::dlmParticleCloud::printWorkTime(const scalar executionTime) const
 
 void Foam::dlmParticleCloud::printSummary() const
 {
-    Info<< "Particles: " << nParticles_ << ", largest speed "
+    Info<< "Particles: " << nParticles() << ", largest speed "
         << maxSurfaceSpeed() << " m/s";
     if (contact_.valid())
     {
@@ -2042,7 +1877,7 @@ void Foam::dlmParticleCloud::printSummary() const
 Foam::scalar Foam::dlmParticleCloud::maxSurfaceSpeed() const
 {
     scalar speed = 0;
-    for (label i = 0; i < nParticles_; ++i)
+    for (label i = 0; i < nParticles(); ++i)
     {
         speed = max(speed, particles_[i].surfaceSpeed());
     }
@@ -2053,7 +1888,7 @@ Foam::scalar Foam::dlmParticleCloud::maxSurfaceSpeed() const
 Foam::scalar Foam::dlmParticleCloud::courantNumber(const scalar deltaT) const
 {
     scalar speed = 0;
-    for (label i = 0; i < nParticles_; ++i)
+    for (label i = 0; i < nParticles(); ++i)
     {
         const dlmParticle& p = particles_[i];
         if (!p.isFree())
@@ -2092,7 +1927,7 @@ bool Foam::dlmParticleCloud::writeData(Ostream& os) const
     const auto oldPrecision = os.precision(17);
 
     os.beginBlock("particles");
-    for (label i = 0; i < nParticles_; ++i)
+    for (label i = 0; i < nParticles(); ++i)
     {
         const dlmParticle& p = particles_[i];
         p.write(os);

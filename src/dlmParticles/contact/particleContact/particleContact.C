@@ -9,6 +9,7 @@
 #include "dlmParticleCloud.H"
 #include "mathematicalConstants.H"
 #include "checkKeywords.H"
+#include "wallPolyPatch.H"
 #include "IOdictionary.H"
 
 using Foam::constant::mathematical::pi;
@@ -351,6 +352,38 @@ void Foam::particleContact::findCandidates
         }
     }
 
+    // With periodic images a contact is met more than once: across a
+    // periodic boundary between a particle and an image of the other and
+    // the other way round, and between images of both. The first found
+    // (lowest indices: the particles read first) is kept. Its key: the two
+    // sources and the second's offset from the first in periods
+    const label nSources = cloud_.nParticles();
+    HashSet<FixedList<label, 5>, FixedList<label, 5>::Hash<>> periodicPairs;
+    auto newContact = [&](const label i, const label j)
+    {
+        const label a = cloud_.source(i);
+        const label b = cloud_.source(j);
+        if (a == b)
+        {
+            return false;
+        }
+        if (nSources == n)
+        {
+            return true;
+        }
+        const periodicImages& images = cloud_.images();
+        labelVector offset(images.periods(j) - images.periods(i));
+        if (a > b)
+        {
+            offset = -offset;
+        }
+        return periodicPairs.insert
+        (
+            FixedList<label, 5>
+            ({min(a, b), max(a, b), offset.x(), offset.y(), offset.z()})
+        );
+    };
+
     forAll(particles, i)
     {
         const dlmParticle& pi = particles[i];
@@ -389,7 +422,7 @@ void Foam::particleContact::findCandidates
                     const scalar gap =
                         mag(pj.position() - Xi) - Ri
                       - pj.shape().boundingRadius();
-                    if (gap < skin)
+                    if (gap < skin && newContact(i, j))
                     {
                         pairs_.append(labelPair(i, j));
                         pairLaws_.append(pairLaw);
@@ -400,7 +433,9 @@ void Foam::particleContact::findCandidates
             }
         }
 
-        if (!pi.isFree())
+        // A particle's contacts with the walls are its own, not its
+        // images' (their centres lie outside the mesh)
+        if (!pi.isFree() || i >= nSources)
         {
             continue;
         }
@@ -420,6 +455,15 @@ void Foam::particleContact::findCandidates
                 wallFeatures_.append(features);
                 involved_[i] = true;
             }
+        }
+    }
+
+    // A particle moves with its images' contacts
+    for (label i = nSources; i < n; ++i)
+    {
+        if (involved_[i])
+        {
+            involved_[cloud_.source(i)] = true;
         }
     }
 
@@ -1159,7 +1203,13 @@ Foam::particleContact::particleContact
         particleMaterial_[i] = materialIndex(particles[i].material());
     }
 
-    if (dict.getOrDefault<bool>("meshWalls", true))
+    // The mesh's walls, where it has any (a periodic box has none, and
+    // needs no law for them)
+    if
+    (
+        dict.getOrDefault<bool>("meshWalls", true)
+     && cloud.mesh().boundaryMesh().findPatchIDs<wallPolyPatch>().size()
+    )
     {
         dictionary meshWalls;
         meshWalls.name() = dict.name() + ".meshWalls";
@@ -1220,6 +1270,50 @@ Foam::particleContact::particleContact
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::particleContact::addImageLoads()
+{
+    const label nSources = cloud_.nParticles();
+    for (label i = nSources; i < force_.size(); ++i)
+    {
+        const label body = cloud_.source(i);
+        for
+        (
+            vectorField* loads :
+            {
+                &force_, &torque_, &onsetForce_, &onsetTorque_, &exitForce_,
+                &exitTorque_
+            }
+        )
+        {
+            vectorField& f = *loads;
+            f[body] += f[i];
+            f[i] = Zero;
+        }
+    }
+}
+
+
+void Foam::particleContact::followSources()
+{
+    const PtrList<dlmParticle>& particles = cloud_.particles();
+    const label nSources = cloud_.nParticles();
+    for (label i = nSources; i < particles.size(); ++i)
+    {
+        if (!involved_[i])
+        {
+            continue;
+        }
+        const label body = cloud_.source(i);
+        position_[i] =
+            position_[body] + particles[i].position()
+          - particles[body].position();
+        velocity_[i] = velocity_[body];
+        omega_[i] = omega_[body];
+        orientation_[i] = orientation_[body];
+    }
+}
+
 
 void Foam::particleContact::evolve
 (
@@ -1282,6 +1376,7 @@ void Foam::particleContact::evolve
     // corrections of contacts that begin or end; its springs do not advance
     correctionStep_ = lastSubStep_;
     evaluate(0);
+    addImageLoads();
 
     // Sub-step from time t on (0: the step is done)
     auto nextStep = [&](const scalar t)
@@ -1310,7 +1405,8 @@ void Foam::particleContact::evolve
             hMin = min(hMin, h);
         }
 
-        forAll(particles, i)
+        const label nSources = cloud_.nParticles();
+        for (label i = 0; i < nSources; ++i)
         {
             if (!involved_[i])
             {
@@ -1404,8 +1500,10 @@ void Foam::particleContact::evolve
         {
             break;
         }
+        followSources();
 
         evaluate(h);
+        addImageLoads();
         maxActive = max(maxActive, nActive_);
 
         t += h;

@@ -86,8 +86,7 @@ void Foam::fv::fractionBlended::correct(volVectorField& U)
             s[iVolume] += fractions[k]*V[celli];
         }
     }
-    Pstream::listCombineGather(sums, plusEqOp<scalar>());
-    Pstream::listCombineScatter(sums);
+    cloud.images().reduceSums(sums, nSums);
 
 
     forAll(particles, i)

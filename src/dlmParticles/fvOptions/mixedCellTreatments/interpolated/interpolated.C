@@ -269,8 +269,7 @@ void Foam::fv::interpolated::sumRegionGeometry()
             }
         }
     }
-    Pstream::listCombineGather(geometricSums_, plusEqOp<scalar>());
-    Pstream::listCombineScatter(geometricSums_);
+    cloud.images().reduceSums(geometricSums_, nGeometricSums);
 }
 
 
@@ -405,8 +404,7 @@ void Foam::fv::interpolated::removeNetForce()
             addVector(s + kTorque, V[celli]*(r ^ f[celli]));
         }
     }
-    Pstream::listCombineGather(sums, plusEqOp<scalar>());
-    Pstream::listCombineScatter(sums);
+    cloud.images().reduceSums(sums, nRestrictSums);
 
     forAll(particles, i)
     {
@@ -700,8 +698,7 @@ void Foam::fv::interpolated::correct(volVectorField& U)
             }
         }
     }
-    Pstream::listCombineGather(sums, plusEqOp<scalar>());
-    Pstream::listCombineScatter(sums);
+    cloud.images().reduceSums(sums, nSums);
 
     // The free particles' velocities from the momentum balance, and the
     // error of each forced cell against its target (zero elsewhere).
@@ -967,8 +964,7 @@ void Foam::fv::interpolated::setLoads
             addVector(s + 3, V[celli]*((C[celli] - X) ^ f[celli]));
         }
     }
-    Pstream::listCombineGather(holdSums, plusEqOp<scalar>());
-    Pstream::listCombineScatter(holdSums);
+    cloud.images().reduceSums(holdSums, 6);
 
     forAll(particles, i)
     {
