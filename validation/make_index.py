@@ -437,7 +437,8 @@ def free_sphere():
             f" surface, box 10 d wide (mesh changes {recommended['meshChangeShare']:.0f} %"
             f" of the run); Ga 178 {pct(oblique['uV_error'], 1)}, its oblique angle not"
             f" reached ({oblique['angle_deg']:.1f} against {oblique['angle_reference']:.1f}"
-            " degrees)", duration(recommended["wallTime_s"]), "freeSphere")
+            " degrees in a closed box; 14.8 held in a stream, the sphere spinning)",
+            duration(recommended["wallTime_s"]), "freeSphere")
 
 
 ROWS = [disk_stokes, ten_cate, duct_sphere, ten_cate_refined, falling_disk, dkt_refined,
