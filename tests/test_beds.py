@@ -141,11 +141,12 @@ def test_free_sphere_crossing_periodic_boundaries_moves_as_the_centred_one(
         assert np.abs(c[:, 4:7] - b[:, 4:7]).max() < 1e-9*speed
 
 
-def colliding_pair_case(tmp_path, foam_env, name, shift):
+def colliding_pair_case(tmp_path, foam_env, name, shift, dry=False):
     """Two free spheres (4 cells per diameter) meeting obliquely in water in
     a periodic box of 12^3 cells, with contacts (friction: they spin),
-    shifted by the given whole cells from the middle of the box."""
-    case = Case.copy(ARRAY, tmp_path / name, foam_env)
+    shifted by the given whole cells from the middle of the box; dry: the
+    dryBox case's settings without gravity (dlmDEMFoam)."""
+    case = Case.copy(HERE / "cases" / "dryBox" if dry else ARRAY, tmp_path / name, foam_env)
     L, h = 0.012, 0.001
     write_periodic_box(case, (L, L, L), (12, 12, 12))
 
@@ -162,18 +163,24 @@ def colliding_pair_case(tmp_path, foam_env, name, shift):
         " velocity (0.1 0 0); }\n"
         f" b {{ shape sphere; radius 0.002; density 2000; position ({place(0.0085, 0.0068, 0.006)});"
         " velocity (-0.1 0 0); }\n}\n")
-    (case.path / "system" / "fvOptions").write_text(
-        "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n"
-        "rigidProjection { type rigidProjection; }\n")
-    for (file, entry), value in {
-        ("constant/transportProperties", "nu"): 1e-6,
-        ("system/controlDict", "adjustTimeStep"): "no",
+    settings = {
         ("system/controlDict", "deltaT"): 0.001,
         ("system/controlDict", "endTime"): 0.03,
         ("system/controlDict", "writeInterval"): 0.03,
-    }.items():
+    }
+    if dry:
+        settings[("constant/g", "value")] = "(0 0 0)"
+        settings[("system/controlDict", "writeInterval")] = 30     # steps
+    else:
+        (case.path / "system" / "fvOptions").write_text(
+            "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n"
+            "rigidProjection { type rigidProjection; }\n")
+        settings[("constant/transportProperties", "nu")] = 1e-6
+        settings[("system/controlDict", "adjustTimeStep")] = "no"
+    for (file, entry), value in settings.items():
         case.set(file, entry, value)
-    case.converge_linear_solvers()
+    if not dry:
+        case.converge_linear_solvers()
     case.run("blockMesh")
     return case
 
@@ -219,6 +226,27 @@ def test_spheres_colliding_across_a_periodic_boundary_collide_as_in_the_middle(
     assert abs(ua[-1, 4]) < 0.02 and abs(ub[-1, 4]) < 0.02
     assert ua[-1, 5] < -0.01 < 0.01 < ub[-1, 5]
     assert np.abs(ua[-1, 7:10]).max() > 1
+
+
+def test_dry_spheres_colliding_across_a_periodic_boundary_collide_as_in_the_middle(
+        tmp_path, foam_env):
+    """The same pair without fluid (dlmDEMFoam): across the x cyclic pair
+    the bounce and spin are the middle pair's to round-off."""
+    shift = (6, 3, 2)
+    centred = colliding_pair_case(tmp_path, foam_env, "centred", (0, 0, 0), dry=True)
+    centred.run("dlmDEMFoam")
+    shifted = colliding_pair_case(tmp_path, foam_env, "shifted", shift, dry=True)
+    shifted.run("dlmDEMFoam")
+    a, b = centred.history(), shifted.history()
+    for name in ("a", "b"):
+        p, q = a[name], b[name]
+        assert p.shape == q.shape == (30, p.shape[1])
+        offset = 0.001*np.array(shift)
+        assert np.abs(np.mod(q[:, 1:4] - offset, 0.012) - p[:, 1:4]).max() < 1e-12
+        assert np.abs(q[:, 4:10] - p[:, 4:10]).max() < 1e-10
+    # They bounced (x velocities reversed) and spin
+    assert a["a"][-1, 4] < -0.02 and a["b"][-1, 4] > 0.02
+    assert np.abs(a["a"][-1, 7:10]).max() > 1
 
 
 def galilean_case(tmp_path, foam_env, name, velocity):
