@@ -290,6 +290,37 @@ void Foam::particleContact::findCandidates
         2*maxSpeed*deltaT + 0.01*minRadius
       + (lubricationViscosity_ > 0 ? lubricationRange_ : 0);
 
+    // A periodic image meets another particle only within reach of the
+    // mesh, where the particles' centres are: the images beyond (most of
+    // them, in a periodic box) are left out of the search
+    const label nSources = cloud_.nParticles();
+    if (nSources < n)
+    {
+        const boundBox& bounds = cloud_.mesh().bounds();
+        label nKept = 0;
+        for (const label i : searched)
+        {
+            const scalar reach =
+                particles[i].shape().boundingRadius() + maxRadius + skin;
+            if
+            (
+                i < nSources
+             || bounds.overlaps
+                (
+                    boundBox
+                    (
+                        particles[i].position() - reach*vector::one,
+                        particles[i].position() + reach*vector::one
+                    )
+                )
+            )
+            {
+                searched[nKept++] = i;
+            }
+        }
+        searched.resize(nKept);
+    }
+
     // Uniform bins of the searched particles' bounding box, side at least
     // the largest interaction distance
     boundBox bb;
@@ -357,7 +388,6 @@ void Foam::particleContact::findCandidates
     // the other way round, and between images of both. The first found
     // (lowest indices: the particles read first) is kept. Its key: the two
     // sources and the second's offset from the first in periods
-    const label nSources = cloud_.nParticles();
     HashSet<FixedList<label, 5>, FixedList<label, 5>::Hash<>> periodicPairs;
     auto newContact = [&](const label i, const label j)
     {
@@ -1271,10 +1301,9 @@ Foam::particleContact::particleContact
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::particleContact::addImageLoads()
+void Foam::particleContact::addImageLoads(const labelUList& images)
 {
-    const label nSources = cloud_.nParticles();
-    for (label i = nSources; i < force_.size(); ++i)
+    for (const label i : images)
     {
         const label body = cloud_.source(i);
         for
@@ -1294,16 +1323,11 @@ void Foam::particleContact::addImageLoads()
 }
 
 
-void Foam::particleContact::followSources()
+void Foam::particleContact::followSources(const labelUList& images)
 {
     const PtrList<dlmParticle>& particles = cloud_.particles();
-    const label nSources = cloud_.nParticles();
-    for (label i = nSources; i < particles.size(); ++i)
+    for (const label i : images)
     {
-        if (!involved_[i])
-        {
-            continue;
-        }
         const label body = cloud_.source(i);
         position_[i] =
             position_[body] + particles[i].position()
@@ -1376,7 +1400,18 @@ void Foam::particleContact::evolve
     // corrections of contacts that begin or end; its springs do not advance
     correctionStep_ = lastSubStep_;
     evaluate(0);
-    addImageLoads();
+
+    // The images in contact, whose loads go to their particles and which
+    // follow them
+    DynamicList<label> images;
+    for (label i = cloud_.nParticles(); i < n; ++i)
+    {
+        if (involved_[i])
+        {
+            images.append(i);
+        }
+    }
+    addImageLoads(images);
 
     // Sub-step from time t on (0: the step is done)
     auto nextStep = [&](const scalar t)
@@ -1500,10 +1535,10 @@ void Foam::particleContact::evolve
         {
             break;
         }
-        followSources();
+        followSources(images);
 
         evaluate(h);
-        addImageLoads();
+        addImageLoads(images);
         maxActive = max(maxActive, nActive_);
 
         t += h;
@@ -1512,7 +1547,9 @@ void Foam::particleContact::evolve
         h = nextStep(t);
     }
 
-    forAll(particles, i)
+    // The images take their particles' state afterwards
+    // (dlmParticleCloud::move)
+    for (label i = 0; i < cloud_.nParticles(); ++i)
     {
         dlmParticle& p = particles[i];
         if (!involved_[i])
