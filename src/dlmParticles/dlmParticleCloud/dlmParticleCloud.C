@@ -1748,9 +1748,10 @@ void Foam::dlmParticleCloud::move()
     }
     else
     {
-        for (dlmParticle& p : particles_)
+        // The images take their particles' state below
+        for (label i = 0; i < nParticles(); ++i)
         {
-            p.move(deltaT);
+            particles_[i].move(deltaT);
         }
     }
 
